@@ -1,0 +1,13 @@
+#pragma once
+//! The sub-commands of the `meshquilt` executable; each registers itself on the app. Callbacks
+//! throw meshquilt::Error, which main() turns into one line on stderr and an exit code.
+
+#include <CLI/CLI.hpp>
+
+namespace meshquilt::cli {
+
+void add_swatch_command(CLI::App& app);
+void add_inspect_command(CLI::App& app);
+void add_synth_command(CLI::App& app);
+
+}  // namespace meshquilt::cli

@@ -1,0 +1,35 @@
+// The meshquilt executable: sub-commands, and the one place errors become exit codes.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "error.h"
+
+int main(int argc, char** argv) {
+  using meshquilt::ExitCode;
+  CLI::App app{"meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting"};
+  app.require_subcommand(1);
+  meshquilt::cli::add_swatch_command(app);
+  meshquilt::cli::add_inspect_command(app);
+  meshquilt::cli::add_synth_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "meshquilt: " << e.what() << " (see --help)\n";
+    return static_cast<int>(ExitCode::usage);
+  } catch (const meshquilt::Error& e) {
+    std::cerr << "meshquilt: " << e.what() << "\n";
+    return static_cast<int>(e.code());
+  } catch (const std::exception& e) {
+    std::cerr << "meshquilt: internal error: " << e.what() << "\n";
+    return static_cast<int>(ExitCode::internal);
+  }
+  return 0;
+}

@@ -1,0 +1,59 @@
+#pragma once
+//! Typed errors of meshquilt. Library code throws them where a problem is found; only the CLI's
+//! main catches them and turns them into one line on stderr and the exit code below.
+
+#include <stdexcept>
+#include <string>
+
+namespace meshquilt {
+
+//! Process exit codes, one per kind of failure (documented in the README).
+enum class ExitCode : int {
+  ok = 0,
+  internal = 1,        //!< a bug or an unexpected exception
+  usage = 2,           //!< bad command line (unknown option, missing argument)
+  file_unreadable = 3, //!< input file missing or unreadable
+  unknown_format = 4,  //!< input file extension/format not supported
+  invalid_mesh = 5,    //!< parse error, no faces, NaN/Inf, non-manifold base, degenerate swatch
+  invalid_option = 6,  //!< an option value that cannot be honoured (bad pattern, sizes)
+  write_failed = 7,    //!< output could not be written
+  device = 8,          //!< requested compute device missing or failing
+  solver = 9,          //!< a numerical solve failed
+};
+
+//! Base of every meshquilt error; carries its exit code.
+class Error : public std::runtime_error {
+ public:
+  Error(ExitCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  ExitCode code() const { return code_; }
+
+ private:
+  ExitCode code_;
+};
+
+//! A file could not be read or written. Message: "FILE: problem".
+class IoError : public Error {
+ public:
+  IoError(ExitCode code, const std::string& message) : Error(code, message) {}
+};
+
+//! Input content is invalid (mesh data, option values). Message names the file or option.
+class InputError : public Error {
+ public:
+  explicit InputError(const std::string& message, ExitCode code = ExitCode::invalid_mesh)
+      : Error(code, message) {}
+};
+
+//! The compute device is missing or a device call failed.
+class DeviceError : public Error {
+ public:
+  explicit DeviceError(const std::string& message) : Error(ExitCode::device, message) {}
+};
+
+//! A numerical solve (factorization, max-flow) failed.
+class SolverError : public Error {
+ public:
+  explicit SolverError(const std::string& message) : Error(ExitCode::solver, message) {}
+};
+
+}  // namespace meshquilt

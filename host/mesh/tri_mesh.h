@@ -1,0 +1,29 @@
+#pragma once
+//! The triangle mesh every stage of meshquilt passes around: plain arrays, no connectivity cache.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace meshquilt {
+
+using Vec3 = glm::dvec3;
+using Tri = std::array<int32_t, 3>;
+
+//! An indexed triangle mesh.
+//! positions  #V vertex positions
+//! triangles  #F vertex indices, counter-clockwise seen from outside
+//! elements   #F element id per face, or empty when not known (elements are then the
+//!            vertex-connected components, see topology.h)
+struct TriMesh {
+  std::vector<Vec3> positions;
+  std::vector<Tri> triangles;
+  std::vector<int32_t> elements;
+
+  size_t num_vertices() const { return positions.size(); }
+  size_t num_faces() const { return triangles.size(); }
+};
+
+}  // namespace meshquilt

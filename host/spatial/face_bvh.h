@@ -1,0 +1,58 @@
+#pragma once
+//! Embree-backed spatial queries over the faces of one triangle mesh. The only place in
+//! meshquilt that includes Embree.
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "mesh/tri_mesh.h"
+
+namespace meshquilt {
+
+//! A face and the closest point on it to a query point (double precision).
+struct ClosestPoint {
+  int32_t face = -1;      //!< -1: nothing within the search radius
+  Vec3 point{0.0};        //!< closest point on `face`
+  Vec3 barycentric{0.0};  //!< of `point` with respect to the face's three vertices
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+//! Closest point on triangle (a, b, c) to p, exact in double (Ericson's region test).
+ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+//! A BVH over a mesh's faces. The mesh must outlive the BVH and not change.
+class FaceBvh {
+ public:
+  explicit FaceBvh(const TriMesh& mesh);
+  ~FaceBvh();
+  FaceBvh(const FaceBvh&) = delete;
+  FaceBvh& operator=(const FaceBvh&) = delete;
+
+  //! Closest point on any face within max_distance (radius-shrinking rtcPointQuery).
+  ClosestPoint closest_point(const Vec3& p, double max_distance = std::numeric_limits<double>::infinity()) const;
+
+  //! The face minimizing cost(face, closest point on it). radius_for(best_cost) must return a
+  //! distance beyond which no face can beat best_cost (e.g. (D - 1) / lambda for Eq. 1), so the
+  //! search radius shrinks as better faces are found; the answer is exact. `best_cost` receives
+  //! the minimum (infinity when the mesh is empty).
+  ClosestPoint min_cost_face(const Vec3& p,
+                             const std::function<double(const ClosestPoint&)>& cost,
+                             const std::function<double(double best_cost)>& radius_for,
+                             double* best_cost) const;
+
+  //! Faces whose bounding boxes overlap the box [lo, hi] (appended to `faces`).
+  void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>& faces) const;
+
+  const TriMesh& mesh() const { return mesh_; }
+
+ private:
+  struct Impl;
+  const TriMesh& mesh_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace meshquilt

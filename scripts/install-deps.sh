@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of meshquilt from Debian's packages (run as root).
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libvulkan-dev mesa-vulkan-drivers vulkan-tools
+  glslang-tools glslang-dev spirv-tools
+  libembree-dev libtbb-dev libeigen3-dev libglm-dev libopenmesh-dev
+  libtet1.5-dev libboost-graph-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  python3
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
