@@ -1,0 +1,134 @@
+#include "quilt/geometry_matching.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "device.h"
+#include "matching_cost.h"
+#include "spatial/face_bvh.h"
+
+namespace meshquilt {
+namespace {
+
+// rng() % n rather than std::uniform_int_distribution: the latter differs between standard
+// libraries, and the same seed must give the same output everywhere.
+size_t draw_index(std::mt19937_64& rng, size_t n) { return static_cast<size_t>(rng() % n); }
+
+}  // namespace
+
+GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, double cell_size,
+                                 const MatchingOptions& options)
+    : swatch_(swatch), options_(options), cell_size_(cell_size) {
+  face_normals_.reserve(swatch.num_faces());
+  for (const Tri& t : swatch.triangles) {
+    const Vec3 n = glm::cross(swatch.positions[t[1]] - swatch.positions[t[0]],
+                              swatch.positions[t[2]] - swatch.positions[t[0]]);
+    const double len = glm::length(n);
+    face_normals_.push_back(len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0));
+  }
+  bvh_ = std::make_unique<FaceBvh>(swatch_);
+
+  kernels::MatchingSwatch device_swatch;
+  device_swatch.positions.reserve(swatch.num_vertices());
+  for (const Vec3& p : swatch.positions) device_swatch.positions.emplace_back(p);
+  device_swatch.triangles.reserve(swatch.num_faces());
+  for (const Tri& t : swatch.triangles)
+    device_swatch.triangles.push_back({static_cast<uint32_t>(t[0]), static_cast<uint32_t>(t[1]),
+                                       static_cast<uint32_t>(t[2])});
+  device_swatch.cell_size = static_cast<float>(cell_size);
+  device_swatch.lambda = static_cast<float>(options.lambda);
+  kernel_ = std::make_unique<kernels::MatchingCost>(device, device_swatch);
+}
+
+GeometryMatcher::~GeometryMatcher() = default;
+
+double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                   const glm::dvec2& translation) const {
+  const double lambda = options_.lambda;
+  const Vec3 shift(translation.x, translation.y, 0.0);
+  double total = 0.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec3& n = normals[i];
+    double best = std::numeric_limits<double>::infinity();
+    bvh_->min_cost_face(
+        points[i] - shift,
+        [&](const ClosestPoint& cp) {
+          return (1.0 + lambda * cp.distance) * (1.0 + glm::length(n - face_normals_[cp.face]));
+        },
+        // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
+        [&](double d) { return (d - 1.0) / lambda; }, &best);
+    total += best;
+  }
+  return total;
+}
+
+MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                   const std::vector<glm::dvec2>& candidates,
+                                   std::mt19937_64& rng) const {
+  MatchResult result;
+  if (points.empty()) {
+    result.translation = candidates[draw_index(rng, candidates.size())];
+    return result;
+  }
+
+  std::vector<glm::vec3> fpoints(points.begin(), points.end());
+  std::vector<glm::vec3> fnormals(normals.begin(), normals.end());
+  std::vector<glm::vec2> ftranslations(candidates.begin(), candidates.end());
+  const std::vector<double> proposed = kernel_->score(fpoints, fnormals, ftranslations);
+  result.scored = static_cast<int>(candidates.size());
+
+  // The kernel proposes: every candidate within the margin of its best is re-scored exactly.
+  const double kernel_best = *std::min_element(proposed.begin(), proposed.end());
+  std::vector<std::pair<size_t, double>> exact;
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    if (proposed[c] <= kernel_best * (1.0 + options_.rescore_margin) + 1e-9)
+      exact.emplace_back(c, exact_cost(points, normals, candidates[c]));
+  }
+  result.rescored = static_cast<int>(exact.size());
+
+  // The host decides: a seeded random pick among the near-best, as image quilting does.
+  double exact_best = std::numeric_limits<double>::infinity();
+  for (const auto& e : exact) exact_best = std::min(exact_best, e.second);
+  std::vector<size_t> near_best;
+  for (const auto& e : exact)
+    if (e.second <= exact_best * (1.0 + options_.choose_tolerance)) near_best.push_back(e.first);
+  const size_t chosen = near_best[draw_index(rng, near_best.size())];
+  glm::dvec2 t = candidates[chosen];
+  double cost = 0.0;
+  for (const auto& e : exact)
+    if (e.first == chosen) cost = e.second;
+
+  // Continuous refinement in x-y: a pattern search that halves its step, so a periodic swatch
+  // whose period is not a whole number of cells still lines up.
+  // It stays within one cell of the grid choice, which keeps the swatch over the sub-patch.
+  const glm::dvec2 grid_choice = t;
+  double step = 0.5 * cell_size_;
+  for (int s = 0; s < options_.refine_steps; ++s, step *= 0.5) {
+    bool improved = true;
+    while (improved) {
+      improved = false;
+      for (const glm::dvec2 d : {glm::dvec2(step, 0), glm::dvec2(-step, 0), glm::dvec2(0, step),
+                                 glm::dvec2(0, -step)}) {
+        const glm::dvec2 moved = t + d;
+        if (std::abs(moved.x - grid_choice.x) > cell_size_ ||
+            std::abs(moved.y - grid_choice.y) > cell_size_)
+          continue;
+        const double c = exact_cost(points, normals, moved);
+        if (c < cost * (1.0 - 1e-12)) {
+          cost = c;
+          t += d;
+          improved = true;
+          break;
+        }
+      }
+    }
+  }
+  result.translation = t;
+  result.cost = cost;
+  return result;
+}
+
+}  // namespace meshquilt
