@@ -1,0 +1,1 @@
+meshquilt_test(synth_bad_input_test NEEDS_CLI SOURCES synth_bad_input_test.cpp)
