@@ -50,13 +50,6 @@ void parse_plane(const std::string& text, double* width, double* height) {
     throw InputError("--plane: sizes must lie in (0, 1000], got '" + text + "'", ExitCode::invalid_option);
 }
 
-engine::BackendChoice parse_backend(const std::string& text) {
-  if (text == "auto") return engine::BackendChoice::automatic;
-  if (text == "vulkan") return engine::BackendChoice::vulkan;
-  if (text == "cpu") return engine::BackendChoice::cpu;
-  throw InputError("--backend: expected auto, vulkan or cpu, got '" + text + "'", ExitCode::invalid_option);
-}
-
 void check_mesh_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -69,7 +62,7 @@ void run_synth(const SynthArgs& args) {
   const auto start = Clock::now();
   double width = 0.0, height = 0.0;
   parse_plane(args.plane, &width, &height);
-  const engine::BackendChoice backend = parse_backend(args.backend);
+  const engine::BackendChoice backend = engine::parse_backend_choice(args.backend);
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
   if (args.cells < 4 || args.cells > 256)
     throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ExitCode::invalid_option);
@@ -109,7 +102,7 @@ void run_synth(const SynthArgs& args) {
       {"vertices", result.num_vertices()},
       {"elements", elements},
       {"seconds", seconds},
-      {"backend", device->backend_name()},
+      {"backend", engine::backend_name(device->backend())},
       {"device", device->name()},
       {"seed", args.seed},
       {"plane", {width, height}},

@@ -1,0 +1,166 @@
+// Reproduces the planar rows of Table 1 of the mesh quilting paper with our closest swatches:
+// for each scenario and back end, runs `meshquilt synth` several times in a child process and
+// prints our median seconds, the paper's, their ratio, faces per second, peak memory and the
+// share of time per stage, as a Markdown table.
+//
+//   table1_runner [--runs N] [--backends cpu,vulkan] [--scenarios wire,apple] [--scale F]
+//
+// --scale multiplies the plane area (0.1 for a quick look).
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Scenario {
+  std::string key;           // command-line name
+  std::string paper_row;     // Table 1 row
+  double paper_seconds;      // Table 1 time
+  long paper_faces;          // Table 1 output faces
+  std::string swatch_args;   // `meshquilt swatch` arguments of our closest swatch
+};
+
+const std::vector<Scenario> kScenarios = {
+    {"wire", "Plane + Wire", 3 * 60.0, 74792, "weave --pattern plain --warps 8 --wefts 8"},
+    {"apple", "Plane + Apple", 3 * 60.0, 321000, "fruit --count 24"},
+};
+
+struct Run {
+  double seconds = 0.0;
+  long faces = 0;
+  long peak_kib = 0;
+  std::map<std::string, double> stages;
+};
+
+// Runs argv in a child; returns its exit status and peak resident memory (KiB).
+int spawn(const std::vector<std::string>& argv, long* peak_kib) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  if (peak_kib) *peak_kib = usage.ru_maxrss;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  std::stringstream s(text);
+  for (std::string part; std::getline(s, part, sep);)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 3;
+  double scale = 1.0;
+  std::vector<std::string> backends = {"cpu", "vulkan"};
+  std::vector<std::string> scenarios = {"wire", "apple"};
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i], value = argv[i + 1];
+    if (flag == "--runs") runs = std::max(1, std::stoi(value));
+    else if (flag == "--backends") backends = split(value, ',');
+    else if (flag == "--scenarios") scenarios = split(value, ',');
+    else if (flag == "--scale") scale = std::stod(value);
+    else {
+      std::fprintf(stderr, "table1_runner: unknown option %s\n", flag.c_str());
+      return 2;
+    }
+  }
+  const std::string cli = MESHQUILT_CLI;
+  const auto work = std::filesystem::temp_directory_path() / ("meshquilt_table1_" + std::to_string(getpid()));
+  std::filesystem::create_directories(work);
+
+  std::printf("| scenario | backend | faces out | ours (s, median of %d) | paper (s) | ours / paper | faces/s | peak MiB | main stages |\n", runs);
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const Scenario& sc : kScenarios) {
+    if (std::find(scenarios.begin(), scenarios.end(), sc.key) == scenarios.end()) continue;
+    const auto swatch = work / (sc.key + ".ply");
+    std::vector<std::string> make = {cli, "swatch"};
+    for (const auto& a : split(sc.swatch_args, ' ')) make.push_back(a);
+    make.insert(make.end(), {"-o", swatch.string()});
+    if (spawn(make, nullptr) != 0) {
+      std::fprintf(stderr, "table1_runner: making the %s swatch failed\n", sc.key.c_str());
+      return 1;
+    }
+    // Plane size for about the paper's output size: faces grow with area.
+    const auto probe = work / "probe.json";
+    spawn({cli, "synth", "--swatch", swatch.string(), "--plane", "1x1", "--backend", "cpu", "--progress", "none",
+           "--stats", probe.string(), "-o", (work / "probe.ply").string()}, nullptr);
+    const long probe_faces = nlohmann::json::parse(std::ifstream(probe))["faces"].get<long>();
+    const double side = std::sqrt(scale * sc.paper_faces / std::max(1L, probe_faces));
+    char plane[64];
+    std::snprintf(plane, sizeof plane, "%.2fx%.2f", side, side);
+
+    for (const std::string& backend : backends) {
+      std::vector<Run> results;
+      for (int r = 0; r < runs; ++r) {
+        const auto stats = work / "stats.json";
+        Run run;
+        const int code = spawn({cli, "synth", "--swatch", swatch.string(), "--plane", plane, "--backend", backend,
+                                "--progress", "none", "--stats", stats.string(), "-o", (work / "out.ply").string()},
+                               &run.peak_kib);
+        if (code != 0) {
+          std::fprintf(stderr, "table1_runner: %s on %s failed (exit %d)\n", sc.key.c_str(), backend.c_str(), code);
+          return 1;
+        }
+        const auto j = nlohmann::json::parse(std::ifstream(stats));
+        run.seconds = j["seconds"].get<double>();
+        run.faces = j["faces"].get<long>();
+        for (const auto& [stage, s] : j["stages"].items()) run.stages[stage] = s.get<double>();
+        results.push_back(run);
+      }
+      std::vector<double> seconds, peaks;
+      for (const Run& r : results) {
+        seconds.push_back(r.seconds);
+        peaks.push_back(static_cast<double>(r.peak_kib));
+      }
+      const double t = median(seconds);
+      std::vector<std::pair<double, std::string>> shares;
+      double stage_total = 0.0;
+      for (const auto& [stage, s] : results.front().stages) stage_total += s;
+      for (const auto& [stage, s] : results.front().stages) shares.emplace_back(s, stage);
+      std::sort(shares.rbegin(), shares.rend());
+      std::string main_stages;
+      for (size_t k = 0; k < std::min<size_t>(3, shares.size()); ++k) {
+        char part[64];
+        std::snprintf(part, sizeof part, "%s%s %.0f%%", k ? ", " : "", shares[k].second.c_str(),
+                      100.0 * shares[k].first / std::max(1e-9, stage_total));
+        main_stages += part;
+      }
+      std::printf("| %s (%s) | %s | %ld | %.1f | %.0f | %.3f | %.0f | %.0f | %s |\n", sc.paper_row.c_str(), plane,
+                  backend.c_str(), results.front().faces, t, sc.paper_seconds, t / sc.paper_seconds,
+                  results.front().faces / t, median(peaks) / 1024.0, main_stages.c_str());
+      std::fflush(stdout);
+    }
+  }
+  std::filesystem::remove_all(work);
+  return 0;
+}
