@@ -1,5 +1,13 @@
 #pragma once
 //! Reading and writing triangle meshes: OBJ, PLY (ASCII and binary), OFF (incl. COFF), STL.
+//!
+//! The parsers are our own rather than OpenMesh's: OpenMesh misreads CGAL's COFF files, drops the
+//! PLY face property `element` and OBJ groups that carry element ids, and is several times slower
+//! on million-face files. They read the whole file at once and parse with std::from_chars.
+//! Details: OBJ `v`/`f` (v, v/vt, v//vn, v/vt/vn, negative indices); PLY ascii and binary
+//! little/big endian, any scalar types, unknown elements and properties skipped; OFF with
+//! [ST][C][N]OFF headers, `#` comments, counts on the keyword line, per-vertex/face colours
+//! ignored; STL ASCII and binary, exact duplicate vertices shared (near ones: weld_vertices).
 
 #include <filesystem>
 
@@ -9,7 +17,8 @@ namespace meshquilt {
 
 //! Reads a mesh, choosing the format by extension (.obj .ply .off .stl, case-insensitive).
 //! Polygons are fan-triangulated. Per-face element ids are read back from a PLY face property
-//! `element` or from OBJ groups, when present.
+//! `element`, or from OBJ groups when every face lies in a group named `element_N` (otherwise
+//! `elements` stays empty). The result has passed validate_mesh.
 //! \throw IoError(file_unreadable) missing/unreadable; IoError(unknown_format) other extension;
 //!        InputError(invalid_mesh) parse error, no faces, bad index, NaN/Inf coordinates.
 //!        Messages read "FILE: problem".
@@ -24,6 +33,8 @@ struct WriteOptions {
 //! Atomic: writes a temporary file beside `file` and renames it, so a failure never leaves a
 //! truncated or overwritten output.
 //! \throw IoError(unknown_format) other extension; IoError(write_failed) on any write error.
+//! Coordinates are written in shortest round-trip form (ASCII) or as doubles (PLY binary), so
+//! PLY/OBJ/OFF round trips are exact; STL stores floats.
 void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const WriteOptions& options = {});
 
 }  // namespace meshquilt

@@ -1,0 +1,212 @@
+#include "mesh/topology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+namespace meshquilt {
+namespace {
+
+struct Bounds {
+  Vec3 min{0.0};
+  Vec3 max{0.0};
+};
+
+Bounds bounds_of(const std::vector<Vec3>& points) {
+  Bounds b;
+  if (points.empty()) return b;
+  b.min = b.max = points.front();
+  for (const Vec3& p : points) {
+    b.min = glm::min(b.min, p);
+    b.max = glm::max(b.max, p);
+  }
+  return b;
+}
+
+class UnionFind {
+ public:
+  explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int32_t find(int32_t x) {
+    while (parent_[x] != x) {
+      parent_[x] = parent_[parent_[x]];  // path halving keeps the trees shallow without recursion
+      x = parent_[x];
+    }
+    return x;
+  }
+  void unite(int32_t a, int32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int32_t> parent_;
+};
+
+// Keeps the faces flagged in `keep` and the vertices they use, in their original order.
+TriMesh compact(const TriMesh& mesh, const std::vector<Tri>& triangles, const std::vector<char>& keep) {
+  TriMesh out;
+  std::vector<int32_t> remap(mesh.positions.size(), -1);
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    if (!keep[f]) continue;
+    for (int32_t v : triangles[f]) remap[v] = 0;
+  }
+  int32_t next = 0;
+  for (size_t v = 0; v < remap.size(); ++v) {
+    if (remap[v] < 0) continue;
+    remap[v] = next++;
+    out.positions.push_back(mesh.positions[v]);
+  }
+  const bool with_elements = !mesh.elements.empty();
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    if (!keep[f]) continue;
+    const Tri& t = triangles[f];
+    out.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+    if (with_elements) out.elements.push_back(mesh.elements[f]);
+  }
+  return out;
+}
+
+}  // namespace
+
+TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
+  const Bounds b = bounds_of(mesh.positions);
+  const double diagonal = glm::length(b.max - b.min);
+  const double tolerance = std::max(0.0, relative_tolerance) * diagonal;
+  const double tolerance2 = tolerance * tolerance;
+  // Cells no smaller than the tolerance, so a 3x3x3 block holds every neighbour within it; and no
+  // smaller than diagonal / 2^20, so cell coordinates pack into 21 bits each.
+  double cell = std::max(tolerance, diagonal / double(1 << 20));
+  if (!(cell > 0.0)) cell = 1.0;
+  auto cell_of = [&](const Vec3& p) {
+    return glm::i64vec3(glm::floor((p - b.min) / cell));
+  };
+  auto key_of = [](const glm::i64vec3& c) {
+    return (static_cast<uint64_t>(c.x + 1) << 42) | (static_cast<uint64_t>(c.y + 1) << 21) | static_cast<uint64_t>(c.z + 1);
+  };
+
+  // Greedy clustering in input order: each vertex joins the earliest representative within the
+  // tolerance, else becomes one. Input order alone decides the result, so it is deterministic.
+  const size_t n = mesh.positions.size();
+  std::vector<int32_t> representative(n);
+  std::vector<int32_t> next_in_cell(n, -1);
+  std::unordered_map<uint64_t, int32_t> cell_head;
+  cell_head.reserve(n);
+  for (size_t v = 0; v < n; ++v) {
+    const Vec3& p = mesh.positions[v];
+    const glm::i64vec3 c = cell_of(p);
+    int32_t found = -1;
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          const glm::i64vec3 neighbour = c + glm::i64vec3(dx, dy, dz);
+          if (neighbour.x < 0 || neighbour.y < 0 || neighbour.z < 0) continue;
+          const auto it = cell_head.find(key_of(neighbour));
+          if (it == cell_head.end()) continue;
+          for (int32_t r = it->second; r >= 0; r = next_in_cell[r]) {
+            const Vec3 d = mesh.positions[r] - p;
+            if (glm::dot(d, d) <= tolerance2 && (found < 0 || r < found)) found = r;
+          }
+        }
+      }
+    }
+    if (found >= 0) {
+      representative[v] = found;
+      continue;
+    }
+    representative[v] = static_cast<int32_t>(v);
+    auto [it, inserted] = cell_head.try_emplace(key_of(c), static_cast<int32_t>(v));
+    if (!inserted) {
+      next_in_cell[v] = it->second;
+      it->second = static_cast<int32_t>(v);
+    }
+  }
+
+  std::vector<Tri> triangles(mesh.triangles.size());
+  std::vector<char> keep(mesh.triangles.size());
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const Tri w = {representative[t[0]], representative[t[1]], representative[t[2]]};
+    triangles[f] = w;
+    keep[f] = w[0] != w[1] && w[1] != w[2] && w[0] != w[2];
+  }
+  return compact(mesh, triangles, keep);
+}
+
+std::vector<int32_t> face_components(const TriMesh& mesh, int32_t* count) {
+  UnionFind sets(mesh.positions.size());
+  for (const Tri& t : mesh.triangles) {
+    sets.unite(t[0], t[1]);
+    sets.unite(t[0], t[2]);
+  }
+  std::vector<int32_t> component(mesh.triangles.size());
+  std::vector<int32_t> id_of_root(mesh.positions.size(), -1);
+  int32_t next = 0;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    int32_t& id = id_of_root[sets.find(mesh.triangles[f][0])];
+    if (id < 0) id = next++;
+    component[f] = id;
+  }
+  if (count) *count = next;
+  return component;
+}
+
+std::vector<TriMesh> split_elements(const TriMesh& mesh) {
+  const std::vector<int32_t> labels = mesh.elements.empty() ? face_components(mesh) : mesh.elements;
+  std::vector<int32_t> ids(labels);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+
+  // One pass over the faces bucketing them by part, then one compaction per part.
+  std::unordered_map<int32_t, size_t> part_of;
+  for (size_t i = 0; i < ids.size(); ++i) part_of[ids[i]] = i;
+  std::vector<std::vector<int32_t>> faces_of(ids.size());
+  for (size_t f = 0; f < labels.size(); ++f) faces_of[part_of[labels[f]]].push_back(static_cast<int32_t>(f));
+
+  std::vector<TriMesh> parts(ids.size());
+  std::vector<int32_t> remap(mesh.positions.size(), -1);
+  for (size_t i = 0; i < ids.size(); ++i) {
+    TriMesh& part = parts[i];
+    std::vector<int32_t> used;
+    for (int32_t f : faces_of[i]) {
+      for (int32_t v : mesh.triangles[f]) used.push_back(v);
+    }
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    part.positions.reserve(used.size());
+    for (size_t k = 0; k < used.size(); ++k) {
+      remap[used[k]] = static_cast<int32_t>(k);
+      part.positions.push_back(mesh.positions[used[k]]);
+    }
+    part.triangles.reserve(faces_of[i].size());
+    for (int32_t f : faces_of[i]) {
+      const Tri& t = mesh.triangles[f];
+      part.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+    }
+  }
+  return parts;
+}
+
+TriMesh join_elements(const std::vector<TriMesh>& parts) {
+  TriMesh out;
+  size_t num_vertices = 0, num_faces = 0;
+  for (const TriMesh& part : parts) {
+    num_vertices += part.positions.size();
+    num_faces += part.triangles.size();
+  }
+  out.positions.reserve(num_vertices);
+  out.triangles.reserve(num_faces);
+  out.elements.reserve(num_faces);
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const auto offset = static_cast<int32_t>(out.positions.size());
+    out.positions.insert(out.positions.end(), parts[i].positions.begin(), parts[i].positions.end());
+    for (const Tri& t : parts[i].triangles) out.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    out.elements.insert(out.elements.end(), parts[i].triangles.size(), static_cast<int32_t>(i));
+  }
+  return out;
+}
+
+}  // namespace meshquilt
