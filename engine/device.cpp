@@ -1,0 +1,47 @@
+#include "device.h"
+
+#include "cpu_device.h"
+#include "error.h"
+#include "vulkan_device.h"
+
+namespace meshquilt::engine {
+
+const char* backend_name(Backend backend) {
+  switch (backend) {
+    case Backend::cpu:
+      return "cpu";
+    case Backend::vulkan:
+      return "vulkan";
+  }
+  return "unknown";
+}
+
+BackendChoice parse_backend_choice(std::string_view text) {
+  if (text == "auto") return BackendChoice::automatic;
+  if (text == "vulkan") return BackendChoice::vulkan;
+  if (text == "cpu") return BackendChoice::cpu;
+  throw InputError("--backend: unknown back end '" + std::string(text) +
+                       "' (expected auto, vulkan or cpu)",
+                   ExitCode::invalid_option);
+}
+
+void Device::record(const DispatchTiming& timing, std::uint32_t invocations) {
+  ++stats_.dispatches;
+  stats_.invocations += invocations;
+  stats_.wall_seconds += timing.wall_seconds;
+}
+
+std::unique_ptr<Device> open_device(BackendChoice choice, std::string* note) {
+  if (note) note->clear();
+  if (choice == BackendChoice::cpu) return open_cpu_device();
+  if (choice == BackendChoice::vulkan) return open_vulkan_device();
+  // automatic: any failure to bring Vulkan up is a reason to fall back, not to stop.
+  try {
+    return open_vulkan_device();
+  } catch (const DeviceError& error) {
+    if (note) *note = std::string("no usable Vulkan device (") + error.what() + "); using the CPU back end";
+    return open_cpu_device();
+  }
+}
+
+}  // namespace meshquilt::engine

@@ -1,0 +1,155 @@
+#include "matching_cost_cpu.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "matching_cost_layout.h"
+
+namespace meshquilt::kernels {
+namespace {
+
+using namespace matching_cost_layout;
+using glm::vec3;
+
+constexpr float kHuge = 3.0e38f;
+
+float segment_distance2(vec3 p, vec3 a, vec3 b) {
+  const vec3 ab = b - a;
+  const float t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-30f), 0.0f, 1.0f);
+  const vec3 d = p - (a + t * ab);
+  return glm::dot(d, d);
+}
+
+// Ericson, Real-Time Collision Detection, 5.1.5, with the same guards as the shader.
+float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c) {
+  const vec3 ab = b - a;
+  const vec3 ac = c - a;
+  const vec3 ap = p - a;
+  const float d1 = glm::dot(ab, ap);
+  const float d2 = glm::dot(ac, ap);
+  vec3 closest;
+  if (d1 <= 0.0f && d2 <= 0.0f) {
+    closest = a;
+  } else {
+    const vec3 bp = p - b;
+    const float d3 = glm::dot(ab, bp);
+    const float d4 = glm::dot(ac, bp);
+    const float vc = d1 * d4 - d3 * d2;
+    const vec3 cp = p - c;
+    const float d5 = glm::dot(ab, cp);
+    const float d6 = glm::dot(ac, cp);
+    const float vb = d5 * d2 - d1 * d6;
+    const float va = d3 * d6 - d5 * d4;
+    if (d3 >= 0.0f && d4 <= d3) {
+      closest = b;
+    } else if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
+      closest = a + std::clamp(d1 / std::max(d1 - d3, 1e-30f), 0.0f, 1.0f) * ab;
+    } else if (d6 >= 0.0f && d5 <= d6) {
+      closest = c;
+    } else if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) {
+      closest = a + std::clamp(d2 / std::max(d2 - d6, 1e-30f), 0.0f, 1.0f) * ac;
+    } else if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f) {
+      closest = b + std::clamp((d4 - d3) / std::max((d4 - d3) + (d5 - d6), 1e-30f), 0.0f, 1.0f) * (c - b);
+    } else {
+      const float denom = va + vb + vc;
+      if (!(denom > 0.0f))
+        return std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, a, c), segment_distance2(p, b, c)));
+      closest = a + ab * (vb / denom) + ac * (vc / denom);
+    }
+  }
+  const vec3 d = p - closest;
+  return glm::dot(d, d);
+}
+
+struct Swatch {
+  const MatchingFace* faces;
+  const uint* cell_start;
+  const uint* cell_faces;
+  const MatchingCostParams& params;
+};
+
+float point_cost(const Swatch& s, vec3 q, vec3 n) {
+  const MatchingCostParams& params = s.params;
+  const float cs = params.cell_size;
+  const float lambda = params.lambda;
+  const int nx = params.grid_nx;
+  const int ny = params.grid_ny;
+  const glm::vec2 origin = params.grid_origin;
+  const glm::vec2 q2(q.x, q.y);
+  const glm::vec2 rel = (q2 - origin) / cs;
+  // One cell outside the grid stands for anything farther (see the shader).
+  const int cx = static_cast<int>(std::clamp(std::floor(rel.x), -1.0f, static_cast<float>(nx)));
+  const int cy = static_cast<int>(std::clamp(std::floor(rel.y), -1.0f, static_cast<float>(ny)));
+  const glm::vec2 grid_max = origin + glm::vec2(static_cast<float>(nx), static_cast<float>(ny)) * cs;
+  const glm::vec2 outside = glm::max(glm::max(origin - q2, q2 - grid_max), glm::vec2(0.0f));
+  const float box_distance = glm::length(outside);
+
+  const int r_first = std::max({-cx, cx - (nx - 1), -cy, cy - (ny - 1), 0});
+  const int r_last = std::max({cx, nx - 1 - cx, cy, ny - 1 - cy});
+  float best = kHuge;
+  for (int r = r_first; r <= r_last; ++r) {
+    const float bound = std::max(static_cast<float>(r - 1) * cs, box_distance);
+    if (1.0f + lambda * bound >= best) break;
+    const int j_first = std::max(cy - r, 0);
+    const int j_last = std::min(cy + r, ny - 1);
+    for (int j = j_first; j <= j_last; ++j) {
+      const bool full_row = j == cy - r || j == cy + r;
+      const int i_first = full_row ? std::max(cx - r, 0) : cx - r;
+      const int i_last = full_row ? std::min(cx + r, nx - 1) : cx + r;
+      const int step = full_row ? 1 : std::max(2 * r, 1);
+      for (int i = i_first; i <= i_last; i += step) {
+        if (i < 0 || i >= nx) continue;
+        const uint cell = static_cast<uint>(j * nx + i);
+        const uint k_end = s.cell_start[cell + 1];
+        for (uint k = s.cell_start[cell]; k < k_end; ++k) {
+          const MatchingFace& f = s.faces[s.cell_faces[k]];
+          const vec3 a(f.a), b(f.b), c(f.c), fn(f.normal);
+          const float normal_factor = 1.0f + glm::length(n - fn);
+          const vec3 middle = (a + b + c) * (1.0f / 3.0f);
+          const float sphere_gap = std::max(glm::length(q - middle) - f.a.w, 0.0f);
+          if ((1.0f + lambda * sphere_gap) * normal_factor >= best) continue;
+          const float dist2 =
+              f.normal.w != 0.0f
+                  ? std::min(segment_distance2(q, a, b), std::min(segment_distance2(q, a, c), segment_distance2(q, b, c)))
+                  : triangle_distance2(q, a, b, c);
+          best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
+  MatchingCostParams params;
+  std::memcpy(&params, dispatch.push_constants.data(), sizeof(params));
+  const auto* points = static_cast<const MatchingPoint*>(dispatch.bindings[MATCHING_COST_BINDING_POINTS]);
+  const auto* translations = static_cast<const vec2*>(dispatch.bindings[MATCHING_COST_BINDING_TRANSLATIONS]);
+  auto* costs = static_cast<float*>(dispatch.bindings[MATCHING_COST_BINDING_COSTS]);
+  const Swatch swatch{static_cast<const MatchingFace*>(dispatch.bindings[MATCHING_COST_BINDING_FACES]),
+                      static_cast<const uint*>(dispatch.bindings[MATCHING_COST_BINDING_CELL_START]),
+                      static_cast<const uint*>(dispatch.bindings[MATCHING_COST_BINDING_CELL_FACES]), params};
+  const uint point_count = params.point_count;
+  const uint end = std::min(dispatch.first + dispatch.count, params.invocation_count);
+  for (uint id = dispatch.first; id < end; ++id) {
+    if (params.mapping == MATCHING_COST_PER_PAIR) {
+      const uint c = id / point_count;
+      const uint i = id - c * point_count;
+      const MatchingPoint& p = points[i];
+      costs[id] = point_cost(swatch, vec3(p.position) - vec3(translations[c], 0.0f), vec3(p.normal));
+    } else {
+      const MatchingPoint& p = points[id];
+      for (uint c = 0; c < params.candidate_count; ++c)
+        costs[c * point_count + id] =
+            point_cost(swatch, vec3(p.position) - vec3(translations[c], 0.0f), vec3(p.normal));
+    }
+  }
+}
+
+}  // namespace meshquilt::kernels

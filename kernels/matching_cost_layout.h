@@ -1,0 +1,73 @@
+// The std430 layout shared by matching_cost.comp and its C++ twin: buffer bindings, element
+// structs and push constants. Valid GLSL (included with GL_GOOGLE_include_directive) and C++.
+#ifndef MESHQUILT_MATCHING_COST_LAYOUT_H
+#define MESHQUILT_MATCHING_COST_LAYOUT_H
+
+#ifdef __cplusplus
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+namespace meshquilt::kernels::matching_cost_layout {
+using uint = std::uint32_t;
+using vec2 = glm::vec2;
+using vec4 = glm::vec4;
+#endif
+
+#define MATCHING_COST_WORKGROUP_SIZE 64
+
+// Storage-buffer bindings (set 0).
+#define MATCHING_COST_BINDING_FACES 0        // MatchingFace[#F]
+#define MATCHING_COST_BINDING_CELL_START 1   // uint[nx*ny + 1], CSR offsets into cell faces
+#define MATCHING_COST_BINDING_CELL_FACES 2   // uint[...], face indices per grid cell
+#define MATCHING_COST_BINDING_POINTS 3       // MatchingPoint[point_count]
+#define MATCHING_COST_BINDING_TRANSLATIONS 4 // vec2[candidate_count]
+#define MATCHING_COST_BINDING_COSTS 5        // float[candidate_count * point_count], candidate-major
+#define MATCHING_COST_BINDING_COUNT 6
+
+// How invocations map to work (MatchingCostParams::mapping).
+#define MATCHING_COST_PER_PAIR 0u  // one invocation per (candidate, point) pair
+#define MATCHING_COST_PER_POINT 1u // one invocation per point, looping over candidates
+
+// A swatch face with what the search needs precomputed on the host.
+struct MatchingFace {
+  vec4 a;      // xyz: vertex 0; w: radius of the bounding sphere around the centroid
+  vec4 b;      // xyz: vertex 1; w: 0
+  vec4 c;      // xyz: vertex 2; w: 0
+  vec4 normal; // xyz: unit face normal (zero if degenerate); w: 1 if degenerate, else 0
+};
+
+// An output vertex: position and unit normal (w unused).
+struct MatchingPoint {
+  vec4 position;
+  vec4 normal;
+};
+
+// Push constants of one dispatch.
+struct MatchingCostParams {
+  vec2 grid_origin;      // x-y of the grid's lower corner
+  float cell_size;       // grid cell edge (x and y)
+  float lambda;          // Eq. 1 weight
+  int grid_nx;           // cells along x (>= 1)
+  int grid_ny;           // cells along y (>= 1)
+  uint point_count;      // points bound in this dispatch
+  uint candidate_count;  // translations bound in this dispatch
+  uint invocation_count; // pairs (per pair) or points (per point)
+  uint mapping;          // MATCHING_COST_PER_PAIR or MATCHING_COST_PER_POINT
+  uint padding0;
+  uint padding1;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(MatchingFace) == 64 && offsetof(MatchingFace, normal) == 48);
+static_assert(sizeof(MatchingPoint) == 32 && offsetof(MatchingPoint, normal) == 16);
+static_assert(sizeof(vec2) == 8, "std430 vec2 array stride");
+static_assert(sizeof(MatchingCostParams) == 48);
+static_assert(offsetof(MatchingCostParams, cell_size) == 8 && offsetof(MatchingCostParams, grid_nx) == 16 &&
+              offsetof(MatchingCostParams, point_count) == 24 && offsetof(MatchingCostParams, mapping) == 36);
+}  // namespace meshquilt::kernels::matching_cost_layout
+#endif
+
+#endif  // MESHQUILT_MATCHING_COST_LAYOUT_H
