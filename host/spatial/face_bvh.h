@@ -24,7 +24,10 @@ struct ClosestPoint {
 //! Closest point on triangle (a, b, c) to p, exact in double (Ericson's region test).
 ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
-//! A BVH over a mesh's faces. The mesh must outlive the BVH and not change.
+//! A BVH over a mesh's faces. The mesh must outlive the BVH and not change. Queries are exact in
+//! double precision (Embree's float BVH only prunes, with a conservative margin) and may run
+//! concurrently from several threads. Construction throws DeviceError when Embree cannot start
+//! (unsupported CPU, out of memory) and SolverError for any other Embree error.
 class FaceBvh {
  public:
   explicit FaceBvh(const TriMesh& mesh);
@@ -44,8 +47,14 @@ class FaceBvh {
                              const std::function<double(double best_cost)>& radius_for,
                              double* best_cost) const;
 
-  //! Faces whose bounding boxes overlap the box [lo, hi] (appended to `faces`).
+  //! Faces whose bounding boxes overlap the box [lo, hi] (appended to `faces`, unordered).
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>& faces) const;
+
+  //! Calls visit(f, g) once for every pair of faces f < g whose (double) bounding boxes overlap
+  //! (closed boxes: touching counts), using Embree's BVH-against-BVH collision. visit may be
+  //! called concurrently from several threads and must be thread-safe.
+  //! \throw DeviceError or SolverError when Embree reports an error.
+  void for_each_overlapping_pair(const std::function<void(int32_t, int32_t)>& visit) const;
 
   const TriMesh& mesh() const { return mesh_; }
 

@@ -1,0 +1,355 @@
+#include "spatial/face_bvh.h"
+
+#include <embree3/rtcore.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <string>
+
+#include "error.h"
+
+namespace meshquilt {
+namespace {
+
+// Embree's BVH is float: boxes are rounded outward and query radii padded by this relative
+// margin (far above float rounding), so the float traversal never prunes a face the exact
+// double test would keep.
+constexpr double kRelativeSlack = 1e-5;
+
+float round_down(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+}
+
+float round_up(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+}
+
+struct Box {
+  Vec3 lo, hi;
+};
+
+Box face_box(const TriMesh& mesh, int32_t f) {
+  const Tri& t = mesh.triangles[f];
+  const Vec3& a = mesh.positions[t[0]];
+  const Vec3& b = mesh.positions[t[1]];
+  const Vec3& c = mesh.positions[t[2]];
+  return {glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))};
+}
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
+         a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
+}
+
+// State of one point query; Embree hands it back to the callback through userPtr.
+struct QueryState {
+  const TriMesh* mesh = nullptr;
+  Vec3 p{0.0};
+  double slack = 0.0;  // absolute padding for float rounding of the query point and boxes
+  // Closest point / min cost queries.
+  ClosestPoint best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  double max_distance = std::numeric_limits<double>::infinity();
+  const std::function<double(const ClosestPoint&)>* cost = nullptr;
+  const std::function<double(double)>* radius_for = nullptr;
+  // Box queries.
+  Box box;
+  std::vector<int32_t>* faces = nullptr;
+};
+
+float padded_radius(double r, double slack) {
+  if (!std::isfinite(r)) return INFINITY;
+  return round_up(r * (1.0 + kRelativeSlack) + slack);
+}
+
+ClosestPoint closest_on_face(const TriMesh& mesh, int32_t f, const Vec3& p) {
+  const Tri& t = mesh.triangles[f];
+  ClosestPoint cp = closest_point_on_triangle(p, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+  cp.face = f;
+  return cp;
+}
+
+bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<QueryState*>(args->userPtr);
+  const auto f = static_cast<int32_t>(args->primID);
+  const ClosestPoint cp = closest_on_face(*q->mesh, f, q->p);
+  if (cp.distance > q->max_distance) return false;
+  // Ties go to the lower face index so results do not depend on traversal order.
+  if (cp.distance < q->best.distance || (cp.distance == q->best.distance && f < q->best.face)) {
+    q->best = cp;
+    const float r = padded_radius(cp.distance, q->slack);
+    if (r < args->query->radius) {
+      args->query->radius = r;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool min_cost_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<QueryState*>(args->userPtr);
+  const auto f = static_cast<int32_t>(args->primID);
+  const ClosestPoint cp = closest_on_face(*q->mesh, f, q->p);
+  const double c = (*q->cost)(cp);
+  if (c < q->best_cost || (c == q->best_cost && f < q->best.face)) {
+    q->best_cost = c;
+    q->best = cp;
+    const float r = padded_radius((*q->radius_for)(c), q->slack);
+    if (r < args->query->radius) {
+      args->query->radius = r;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool box_callback(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<QueryState*>(args->userPtr);
+  const auto f = static_cast<int32_t>(args->primID);
+  if (boxes_overlap(face_box(*q->mesh, f), q->box)) q->faces->push_back(f);
+  return false;
+}
+
+void bounds_callback(const RTCBoundsFunctionArguments* args) {
+  const auto* mesh = static_cast<const TriMesh*>(args->geometryUserPtr);
+  const Box b = face_box(*mesh, static_cast<int32_t>(args->primID));
+  RTCBounds* o = args->bounds_o;
+  o->lower_x = round_down(b.lo.x);
+  o->lower_y = round_down(b.lo.y);
+  o->lower_z = round_down(b.lo.z);
+  o->upper_x = round_up(b.hi.x);
+  o->upper_y = round_up(b.hi.y);
+  o->upper_z = round_up(b.hi.z);
+}
+
+// Point queries on user geometry call the geometry's point query function; intersection is
+// never requested, but Embree requires the callbacks to be set.
+void unused_intersect(const RTCIntersectFunctionNArguments*) {}
+void unused_occluded(const RTCOccludedFunctionNArguments*) {}
+
+}  // namespace
+
+struct FaceBvh::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  double slack = 0.0;
+  // Embree reports errors through a C callback; the first one is kept and thrown after the call.
+  std::mutex error_mutex;
+  RTCError error_code = RTC_ERROR_NONE;
+  std::string error_message;
+
+  static void on_error(void* user, RTCError code, const char* message) {
+    auto* self = static_cast<Impl*>(user);
+    std::lock_guard<std::mutex> lock(self->error_mutex);
+    if (self->error_code == RTC_ERROR_NONE) {
+      self->error_code = code;
+      self->error_message = message ? message : "";
+    }
+  }
+
+  void check(const char* what) {
+    std::lock_guard<std::mutex> lock(error_mutex);
+    if (error_code == RTC_ERROR_NONE) return;
+    const std::string message = std::string("Embree ") + what + ": " + error_message + " (code " +
+                                std::to_string(static_cast<int>(error_code)) + ")";
+    const RTCError code = error_code;
+    error_code = RTC_ERROR_NONE;
+    if (code == RTC_ERROR_UNSUPPORTED_CPU || code == RTC_ERROR_OUT_OF_MEMORY) throw DeviceError(message);
+    throw SolverError(message);
+  }
+
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // Ericson, Real-Time Collision Detection, 5.1.5: find the Voronoi region of p.
+  ClosestPoint out;
+  auto finish = [&](double u, double v, double w) {
+    out.barycentric = Vec3(u, v, w);
+    out.point = u * a + v * b + w * c;
+    out.distance = glm::length(p - out.point);
+    return out;
+  };
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return finish(1, 0, 0);
+  const Vec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return finish(0, 1, 0);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return finish(1 - v, v, 0);
+  }
+  const Vec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return finish(0, 0, 1);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return finish(1 - w, 0, w);
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return finish(0, 1 - w, w);
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) {
+    // Degenerate (zero-area) triangle: the closest of its three edges.
+    ClosestPoint best;
+    const Vec3 v[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 e = v[(i + 1) % 3] - v[i];
+      const double len2 = glm::dot(e, e);
+      const double t = len2 > 0.0 ? std::clamp(glm::dot(p - v[i], e) / len2, 0.0, 1.0) : 0.0;
+      const Vec3 q = v[i] + t * e;
+      const double d = glm::length(p - q);
+      if (d < best.distance) {
+        best.distance = d;
+        best.point = q;
+        best.barycentric = Vec3(0.0);
+        best.barycentric[i] = 1.0 - t;
+        best.barycentric[(i + 1) % 3] = t;
+      }
+    }
+    return best;
+  }
+  const double denom = 1.0 / sum;
+  const double v = vb * denom, w = vc * denom;
+  return finish(1.0 - v - w, v, w);
+}
+
+FaceBvh::FaceBvh(const TriMesh& mesh) : mesh_(mesh), impl_(std::make_unique<Impl>()) {
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) {
+    throw DeviceError("Embree: cannot create a device (" + std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
+  }
+  rtcSetDeviceErrorFunction(impl_->device, &Impl::on_error, impl_.get());
+
+  double scale = 0.0;
+  for (const Vec3& v : mesh.positions) scale = std::max(scale, std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z))));
+  impl_->slack = 8.0 * kRelativeSlack * scale + 1e-30;
+
+  // User geometry: bounds come from the double positions rounded outward, so no float copy of
+  // the vertices (and no padding after a vertex buffer) is needed, and every exact test runs on
+  // the mesh's own doubles.
+  impl_->scene = rtcNewScene(impl_->device);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_MEDIUM);
+  RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(mesh.num_faces()));
+  rtcSetGeometryUserData(geometry, const_cast<TriMesh*>(&mesh));
+  rtcSetGeometryBoundsFunction(geometry, &bounds_callback, nullptr);
+  rtcSetGeometryIntersectFunction(geometry, &unused_intersect);
+  rtcSetGeometryOccludedFunction(geometry, &unused_occluded);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(impl_->scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(impl_->scene);
+  impl_->check("scene build");
+}
+
+FaceBvh::~FaceBvh() = default;
+
+ClosestPoint FaceBvh::closest_point(const Vec3& p, double max_distance) const {
+  QueryState q;
+  q.mesh = &mesh_;
+  q.p = p;
+  q.max_distance = max_distance;
+  q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
+  if (mesh_.num_faces() == 0) return q.best;
+  RTCPointQuery query;
+  query.x = static_cast<float>(p.x);
+  query.y = static_cast<float>(p.y);
+  query.z = static_cast<float>(p.z);
+  query.time = 0.0f;
+  query.radius = padded_radius(max_distance, q.slack);
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(impl_->scene, &query, &context, &closest_point_callback, &q);
+  impl_->check("point query");
+  return q.best;
+}
+
+ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(const ClosestPoint&)>& cost,
+                                    const std::function<double(double best_cost)>& radius_for,
+                                    double* best_cost) const {
+  QueryState q;
+  q.mesh = &mesh_;
+  q.p = p;
+  q.cost = &cost;
+  q.radius_for = &radius_for;
+  q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
+  if (mesh_.num_faces() > 0) {
+    RTCPointQuery query;
+    query.x = static_cast<float>(p.x);
+    query.y = static_cast<float>(p.y);
+    query.z = static_cast<float>(p.z);
+    query.time = 0.0f;
+    query.radius = INFINITY;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(impl_->scene, &query, &context, &min_cost_callback, &q);
+    impl_->check("point query");
+  }
+  if (best_cost) *best_cost = q.best_cost;
+  return q.best;
+}
+
+void FaceBvh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>& faces) const {
+  if (mesh_.num_faces() == 0 || lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return;
+  QueryState q;
+  q.mesh = &mesh_;
+  q.box = {lo, hi};
+  q.faces = &faces;
+  // The sphere around the box contains it, so every face box overlapping the box is visited;
+  // the callback keeps only the exact overlaps.
+  const Vec3 center = 0.5 * (lo + hi);
+  q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(center.x), std::max(std::abs(center.y), std::abs(center.z)));
+  RTCPointQuery query;
+  query.x = static_cast<float>(center.x);
+  query.y = static_cast<float>(center.y);
+  query.z = static_cast<float>(center.z);
+  query.time = 0.0f;
+  query.radius = padded_radius(0.5 * glm::length(hi - lo), q.slack);
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(impl_->scene, &query, &context, &box_callback, &q);
+  impl_->check("box query");
+}
+
+namespace {
+struct CollideState {
+  const TriMesh* mesh;
+  const std::function<void(int32_t, int32_t)>* visit;
+};
+
+void collide_callback(void* user, RTCCollision* collisions, unsigned count) {
+  const auto* s = static_cast<const CollideState*>(user);
+  for (unsigned i = 0; i < count; ++i) {
+    const auto f = static_cast<int32_t>(collisions[i].primID0);
+    const auto g = static_cast<int32_t>(collisions[i].primID1);
+    // Embree reports each unordered leaf-level candidate in both orders; keep one and test the
+    // exact double boxes.
+    if (f < g && boxes_overlap(face_box(*s->mesh, f), face_box(*s->mesh, g))) (*s->visit)(f, g);
+  }
+}
+}  // namespace
+
+void FaceBvh::for_each_overlapping_pair(const std::function<void(int32_t, int32_t)>& visit) const {
+  if (mesh_.num_faces() < 2) return;
+  CollideState state{&mesh_, &visit};
+  rtcCollide(impl_->scene, impl_->scene, &collide_callback, &state);
+  impl_->check("collision");
+}
+
+}  // namespace meshquilt
