@@ -1,11 +1,189 @@
+// `meshquilt swatch KIND [options] -o FILE`: writes one of the built-in swatches.
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "commands.h"
 #include "error.h"
+#include "mesh/mesh_io.h"
+#include "swatch/chainmail.h"
+#include "swatch/fruit.h"
+#include "swatch/heightfield.h"
+#include "swatch/netpbm.h"
+#include "swatch/nuts.h"
+#include "swatch/weave.h"
+#include "swatch/weave_pattern.h"
 
 namespace meshquilt::cli {
+namespace {
+
+// Options every kind takes.
+struct Common {
+  std::filesystem::path output;
+  uint64_t seed = 1;
+  std::string preset = "default";
+  bool ascii = false;
+};
+
+// Binds command-line options to fields of an XxxOptions struct so that only the options given
+// on the command line override the chosen preset.
+template <class Options>
+class Binder {
+ public:
+  template <class T>
+  void add(CLI::App* cmd, const std::string& flag, T Options::*field, const std::string& help) {
+    CLI::Option* option = cmd->add_option(flag, given_.*field, help)->capture_default_str();
+    overrides_.push_back([option, field, this](Options& target) {
+      if (option->count() > 0) target.*field = given_.*field;
+    });
+  }
+
+  Options resolve(const Options& preset) const {
+    Options result = preset;
+    for (const auto& apply : overrides_) apply(result);
+    return result;
+  }
+
+ private:
+  Options given_;
+  std::vector<std::function<void(Options&)>> overrides_;
+};
+
+void add_common(CLI::App* cmd, Common& common, bool random) {
+  cmd->add_option("-o,--output", common.output, "output mesh (.ply .obj .off .stl)")->required();
+  cmd->add_option("--seed", common.seed, random ? "seed of every random choice" : "accepted for uniformity; this kind is not random")
+      ->capture_default_str();
+  cmd->add_option("--preset", common.preset, "starting sizes: default (paper-sized) or small (a few hundred to 2,000 faces)")
+      ->check(CLI::IsMember({"default", "small"}))
+      ->capture_default_str();
+  cmd->add_flag("--ascii", common.ascii, "ASCII PLY/STL instead of binary");
+}
+
+void write(const TriMesh& mesh, const Common& common) {
+  WriteOptions options;
+  options.binary = !common.ascii;
+  write_mesh(mesh, common.output, options);
+  std::cout << "wrote " << common.output.string() << ": " << mesh.num_faces() << " faces, "
+            << mesh.num_vertices() << " vertices, "
+            << (mesh.elements.empty() ? 0 : *std::max_element(mesh.elements.begin(), mesh.elements.end()) + 1)
+            << " elements\n";
+}
+
+void add_chainmail(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand("chainmail", "European 4-in-1 chain mail: tilted rings, each linked through four neighbours");
+  add_common(cmd, *common, false);
+  auto b = std::make_shared<Binder<ChainmailOptions>>();
+  b->add(cmd, "--rows", &ChainmailOptions::rows, "ring rows along y (even)");
+  b->add(cmd, "--columns", &ChainmailOptions::columns, "rings per row along x");
+  b->add(cmd, "--ring-radius", &ChainmailOptions::ring_radius, "radius of a ring's centreline");
+  b->add(cmd, "--wire-radius", &ChainmailOptions::wire_radius, "radius of the wire");
+  b->add(cmd, "--pitch-x", &ChainmailOptions::pitch_x, "ring spacing along a row");
+  b->add(cmd, "--pitch-y", &ChainmailOptions::pitch_y, "row spacing");
+  b->add(cmd, "--tilt", &ChainmailOptions::tilt_degrees, "ring tilt out of the x-y plane, degrees");
+  b->add(cmd, "--ring-segments", &ChainmailOptions::ring_segments, "segments around a ring");
+  b->add(cmd, "--wire-segments", &ChainmailOptions::wire_segments, "segments around the wire");
+  cmd->callback([common, b] {
+    const ChainmailOptions preset = common->preset == "small" ? ChainmailOptions::small() : ChainmailOptions{};
+    write(make_chainmail(b->resolve(preset)), *common);
+  });
+}
+
+void add_weave(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand("weave", "woven yarns: warps along y and wefts along x, over and under by a weave pattern");
+  add_common(cmd, *common, false);
+  auto pattern = std::make_shared<std::string>("plain");
+  cmd->add_option("--pattern", *pattern, "plain, twill:M/N, satin:M/N, or a PBM/PGM image (dark: warp over)")
+      ->capture_default_str();
+  auto b = std::make_shared<Binder<WeaveOptions>>();
+  b->add(cmd, "--warps", &WeaveOptions::warps, "warps (a multiple of the pattern's ends; 0: about 10)");
+  b->add(cmd, "--wefts", &WeaveOptions::wefts, "wefts (a multiple of the pattern's picks; 0: about 10)");
+  b->add(cmd, "--pitch", &WeaveOptions::pitch, "distance between neighbouring yarns");
+  b->add(cmd, "--yarn-radius", &WeaveOptions::yarn_radius, "yarn radius");
+  b->add(cmd, "--amplitude", &WeaveOptions::amplitude, "height of a yarn above or below z = 0 at a crossing");
+  b->add(cmd, "--segments", &WeaveOptions::segments_per_pitch, "segments per pitch along a yarn");
+  b->add(cmd, "--sides", &WeaveOptions::sides, "vertices around a yarn");
+  cmd->callback([common, b, pattern] {
+    WeaveOptions options = b->resolve(common->preset == "small" ? WeaveOptions::small() : WeaveOptions{});
+    options.pattern = parse_weave_pattern(*pattern);
+    write(make_weave(options), *common);
+  });
+}
+
+void add_fruit(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand("fruit", "apple-like blobs of varied size and shape in one layer, not touching");
+  add_common(cmd, *common, true);
+  auto b = std::make_shared<Binder<FruitOptions>>();
+  b->add(cmd, "--columns", &FruitOptions::columns, "fruit per row");
+  b->add(cmd, "--rows", &FruitOptions::rows, "rows");
+  b->add(cmd, "--radius", &FruitOptions::radius, "mean radius");
+  b->add(cmd, "--size-variation", &FruitOptions::size_variation, "relative spread of sizes, 0..0.5");
+  b->add(cmd, "--gap", &FruitOptions::gap, "smallest distance between two fruit");
+  b->add(cmd, "--subdivisions", &FruitOptions::subdivisions, "icosahedron subdivisions (20*4^n faces each)");
+  cmd->callback([common, b] {
+    FruitOptions options = b->resolve(common->preset == "small" ? FruitOptions::small() : FruitOptions{});
+    options.seed = common->seed;
+    write(make_fruit(options), *common);
+  });
+}
+
+void add_nuts(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand("nuts", "hex nuts (genus 1) at varied rotations in one layer, not touching");
+  add_common(cmd, *common, true);
+  auto b = std::make_shared<Binder<NutOptions>>();
+  b->add(cmd, "--columns", &NutOptions::columns, "nuts per row");
+  b->add(cmd, "--rows", &NutOptions::rows, "rows");
+  b->add(cmd, "--across-flats", &NutOptions::across_flats, "hexagon width across flats");
+  b->add(cmd, "--hole-radius", &NutOptions::hole_radius, "hole radius");
+  b->add(cmd, "--thickness", &NutOptions::thickness, "nut height");
+  b->add(cmd, "--size-variation", &NutOptions::size_variation, "relative spread of sizes, 0..0.5");
+  b->add(cmd, "--gap", &NutOptions::gap, "smallest distance between two nuts");
+  b->add(cmd, "--segments-per-side", &NutOptions::segments_per_side, "segments along a hexagon side");
+  b->add(cmd, "--wall-segments", &NutOptions::wall_segments, "segments up the walls");
+  b->add(cmd, "--face-segments", &NutOptions::face_segments, "segments across the flat faces");
+  cmd->callback([common, b] {
+    NutOptions options = b->resolve(common->preset == "small" ? NutOptions::small() : NutOptions{});
+    options.seed = common->seed;
+    write(make_nuts(options), *common);
+  });
+}
+
+void add_heightfield(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand("heightfield", "a relief from a grayscale image (PGM/PBM/PPM): closed slab or open sheet");
+  add_common(cmd, *common, false);
+  auto image = std::make_shared<std::filesystem::path>();
+  cmd->add_option("--image", *image, "height image (white high); default: a built-in egg-crate relief");
+  auto b = std::make_shared<Binder<HeightfieldOptions>>();
+  b->add(cmd, "--resolution", &HeightfieldOptions::builtin_resolution, "pixels a side of the built-in relief");
+  b->add(cmd, "--max-resolution", &HeightfieldOptions::max_resolution, "longer side is box-filtered down to this many pixels");
+  b->add(cmd, "--size", &HeightfieldOptions::size, "length of the longer side");
+  b->add(cmd, "--height", &HeightfieldOptions::height, "relief height (white minus black)");
+  b->add(cmd, "--base", &HeightfieldOptions::base, "slab thickness below black");
+  auto open = std::make_shared<bool>(false);
+  cmd->add_flag("--open", *open, "the top sheet alone instead of a closed slab");
+  cmd->callback([common, b, image, open] {
+    HeightfieldOptions options = b->resolve(common->preset == "small" ? HeightfieldOptions::small() : HeightfieldOptions{});
+    options.open = *open;
+    if (!image->empty()) options.image = read_netpbm(*image);
+    write(make_heightfield(options), *common);
+  });
+}
+
+}  // namespace
 
 void add_swatch_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("swatch", "(under construction)");
-  cmd->callback([] { throw Error(ExitCode::internal, "swatch: under construction"); });
+  auto* cmd = app.add_subcommand("swatch", "writes a built-in swatch: chainmail, weave, fruit, nuts or heightfield");
+  cmd->require_subcommand(1);
+  auto common = std::make_shared<Common>();
+  add_chainmail(cmd, common);
+  add_weave(cmd, common);
+  add_fruit(cmd, common);
+  add_nuts(cmd, common);
+  add_heightfield(cmd, common);
 }
 
 }  // namespace meshquilt::cli

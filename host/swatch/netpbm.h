@@ -1,0 +1,27 @@
+#pragma once
+//! A reader for the Netpbm image formats (PBM P1/P4, PGM P2/P5, PPM P3/P6), written here so
+//! height fields and Jacquard weave designs need no image library.
+
+#include <filesystem>
+#include <vector>
+
+namespace meshquilt {
+
+//! A grayscale image with intensities in [0, 1] (0 black, 1 white).
+//! values  #height x #width, row-major, row 0 the top row of the image as viewed
+struct GrayImage {
+  int width = 0;
+  int height = 0;
+  std::vector<double> values;
+
+  double at(int column, int row) const { return values[static_cast<size_t>(row) * width + column]; }
+};
+
+//! Reads a PBM (1 = black), PGM (maxval 1..65535) or PPM (converted to luma, Rec. 601 weights)
+//! file in plain or raw form; '#' comments in the header are skipped.
+//! \throw IoError(file_unreadable) when the file is missing, unreadable, truncated or corrupt;
+//!        IoError(unknown_format) when it does not start with a Netpbm magic number P1..P6.
+//!        Messages read "FILE: problem".
+GrayImage read_netpbm(const std::filesystem::path& file);
+
+}  // namespace meshquilt
