@@ -125,10 +125,12 @@ void push_fan(std::vector<Tri>& triangles, const std::vector<int32_t>& polygon) 
   for (size_t i = 1; i + 1 < polygon.size(); ++i) triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
 }
 
-int32_t checked_index(int64_t value, size_t num_vertices, const std::string& where) {
+// `where` builds the message prefix only on failure: this runs once per face corner.
+template <typename Where>
+int32_t checked_index(int64_t value, size_t num_vertices, Where&& where) {
   if (value < 0 || static_cast<uint64_t>(value) >= num_vertices) {
-    throw InputError(where + "vertex index " + std::to_string(value) + " outside [0, " + std::to_string(num_vertices) +
-                     ")");
+    throw InputError(where() + "vertex index " + std::to_string(value) + " outside [0, " +
+                     std::to_string(num_vertices) + ")");
   }
   return static_cast<int32_t>(value);
 }
@@ -269,7 +271,8 @@ TriMesh read_off(std::string_view text, const std::string& name) {
       int64_t index = 0;
       if (index_token.empty()) fail("file ends inside face " + std::to_string(f));
       if (!parse_int(index_token, index)) fail("bad face index '" + std::string(index_token) + "'");
-      polygon.push_back(checked_index(index, mesh.positions.size(), name + ": face " + std::to_string(f) + ": "));
+      polygon.push_back(checked_index(index, mesh.positions.size(),
+                                    [&] { return name + ": face " + std::to_string(f) + ": "; }));
     }
     push_fan(mesh.triangles, polygon);
     cursor.skip_line();  // face colours
@@ -532,7 +535,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
           if (!reader.read(property.type, value)) truncated(item);
           if (value != std::floor(value)) parse_fail(name, "PLY face " + std::to_string(item) + " has a non-integer index");
           polygon.push_back(checked_index(static_cast<int64_t>(value), mesh.positions.size(),
-                                          name + ": PLY face " + std::to_string(item) + ": "));
+                                          [&] { return name + ": PLY face " + std::to_string(item) + ": "; }));
         }
       }
       if (is_vertex) {
