@@ -59,6 +59,7 @@ class CpuDevice final : public Device {
   }
   // Bindings are plain pointers here; the limit only keeps 32-bit indexing in kernels valid.
   std::size_t max_binding_bytes() const override { return std::size_t{1} << 31; }
+  std::uint32_t max_loop_iterations() const override { return 0; }
 
   std::unique_ptr<Buffer> create_buffer(std::size_t bytes) override {
     if (bytes > max_binding_bytes())

@@ -110,6 +110,11 @@ class Device {
   virtual std::string name() const = 0;
   //! Largest buffer that can be bound to one storage binding, in bytes (128 MiB on lavapipe).
   virtual std::size_t max_binding_bytes() const = 0;
+  //! Total loop iterations one shader invocation may run before the driver silently ends its
+  //! loops, or 0 when unlimited. llvmpipe (lavapipe) shares 65535 iterations between all loops
+  //! of a shader, counted per SIMD vector; kernels with long searches must stay below it (a
+  //! single loop whose lanes each count their own iterations is safe) or detect the cut.
+  virtual std::uint32_t max_loop_iterations() const = 0;
 
   //! A new host-mapped storage buffer of `bytes` bytes.
   //! \throw DeviceError when the allocation fails or exceeds max_binding_bytes().

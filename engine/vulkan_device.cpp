@@ -121,6 +121,12 @@ class VulkanDevice final : public Device {
   Backend backend() const override { return Backend::vulkan; }
   std::string name() const override { return properties_.deviceName; }
   std::size_t max_binding_bytes() const override { return properties_.limits.maxStorageBufferRange; }
+  // gallivm's LP_MAX_TGSI_LOOP_ITERATIONS: one counter for every loop of a shader invocation.
+  std::uint32_t max_loop_iterations() const override {
+    const bool llvmpipe = properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+                          std::strncmp(properties_.deviceName, "llvmpipe", 8) == 0;
+    return llvmpipe ? 65535u : 0u;
+  }
 
   std::unique_ptr<Buffer> create_buffer(std::size_t bytes) override {
     if (bytes > max_binding_bytes())

@@ -8,7 +8,9 @@ if(length EQUAL 0 OR NOT remainder EQUAL 0)
 endif()
 # SPIR-V words are little-endian in the file: reverse the bytes of each word.
 string(REGEX REPLACE "(..)(..)(..)(..)" "0x\\4\\3\\2\\1u, " words "${hex}")
-string(REGEX REPLACE "(([^ ]+ ){8})" "\\1\n  " words "${words}")
+# Eight words a line (CMake regexes have no {n} repetition).
+string(REPEAT "[^ ]+ " 8 eight)
+string(REGEX REPLACE "(${eight})" "\\1\n  " words "${words}")
 file(WRITE "${OUTPUT}.tmp"
   "// Generated from ${NAME}.comp by embed_spirv.cmake; do not edit.\n"
   "#pragma once\n#include <cstdint>\n\n"

@@ -68,69 +68,127 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c) {
   return dot(d, d);
 }
 
-// Eq. 2 for one query point q (already moved by -t) with unit normal n.
-float point_cost(vec3 q, vec3 n) {
-  float cs = params.cell_size;
-  float lambda = params.lambda;
-  int nx = params.grid_nx;
-  int ny = params.grid_ny;
-  vec2 rel = (q.xy - params.grid_origin) / cs;
-  // One cell outside the grid stands for anything farther: the ring bounds stay valid (only
-  // weaker) and integer arithmetic cannot overflow.
-  int cx = int(clamp(floor(rel.x), -1.0, float(nx)));
-  int cy = int(clamp(floor(rel.y), -1.0, float(ny)));
-  vec2 grid_max = params.grid_origin + vec2(float(nx), float(ny)) * cs;
-  vec2 outside = max(max(params.grid_origin - q.xy, q.xy - grid_max), vec2(0.0));
-  float box_distance = length(outside);
+// The ring search of one query: q = p - (t, 0) with the point's unit normal n.
+struct Search {
+  vec3 q;
+  vec3 n;
+  int cx, cy;          // q's cell, clamped to one cell outside the grid
+  float box_distance;  // x-y distance from q to the grid's rectangle
+  int r, r_last;       // current ring, last ring that touches the grid
+  int i, j;            // next cell to open
+  bool new_ring;       // ring r has not been tested against the bound yet
+  uint k, k_end;       // faces of the open cell still to test
+  float best;          // smallest D so far
+};
 
-  int r_first = max(max(max(-cx, cx - (nx - 1)), max(-cy, cy - (ny - 1))), 0);
-  int r_last = max(max(cx, nx - 1 - cx), max(cy, ny - 1 - cy));
-  float best = kHuge;
-  for (int r = r_first; r <= r_last; ++r) {
-    // Every face not yet seen lies in rings >= r, at least (r-1) cells away in x or y.
-    float bound = max(float(r - 1) * cs, box_distance);
-    if (1.0 + lambda * bound >= best) break;
-    int j_first = max(cy - r, 0);
-    int j_last = min(cy + r, ny - 1);
-    for (int j = j_first; j <= j_last; ++j) {
-      bool full_row = (j == cy - r) || (j == cy + r);
-      int i_first = full_row ? max(cx - r, 0) : cx - r;
-      int i_last = full_row ? min(cx + r, nx - 1) : cx + r;
-      int step = full_row ? 1 : max(2 * r, 1);
-      for (int i = i_first; i <= i_last; i += step) {
-        if (i < 0 || i >= nx) continue;
-        uint cell = uint(j * nx + i);
-        uint k_end = cell_start[cell + 1u];
-        for (uint k = cell_start[cell]; k < k_end; ++k) {
-          MatchingFace f = faces[cell_faces[k]];
-          float normal_factor = 1.0 + length(n - f.normal.xyz);
-          vec3 middle = (f.a.xyz + f.b.xyz + f.c.xyz) * (1.0 / 3.0);
-          float sphere_gap = max(length(q - middle) - f.a.w, 0.0);
-          if ((1.0 + lambda * sphere_gap) * normal_factor >= best) continue;
-          float dist2 = f.normal.w != 0.0
-              ? min(segment_distance2(q, f.a.xyz, f.b.xyz),
-                    min(segment_distance2(q, f.a.xyz, f.c.xyz), segment_distance2(q, f.b.xyz, f.c.xyz)))
-              : triangle_distance2(q, f.a.xyz, f.b.xyz, f.c.xyz);
-          best = min(best, (1.0 + lambda * sqrt(dist2)) * normal_factor);
-        }
-      }
-    }
-  }
-  return best;
+int first_i(Search s, int j) {
+  bool full_row = (j == s.cy - s.r) || (j == s.cy + s.r);
+  return full_row ? max(s.cx - s.r, 0) : s.cx - s.r;
 }
 
+Search start_search(vec3 q, vec3 n) {
+  Search s;
+  s.q = q;
+  s.n = n;
+  int nx = params.grid_nx;
+  int ny = params.grid_ny;
+  vec2 rel = (q.xy - params.grid_origin) / params.cell_size;
+  // One cell outside the grid stands for anything farther: the ring bounds stay valid (only
+  // weaker) and integer arithmetic cannot overflow.
+  s.cx = int(clamp(floor(rel.x), -1.0, float(nx)));
+  s.cy = int(clamp(floor(rel.y), -1.0, float(ny)));
+  vec2 grid_max = params.grid_origin + vec2(float(nx), float(ny)) * params.cell_size;
+  s.box_distance = length(max(max(params.grid_origin - q.xy, q.xy - grid_max), vec2(0.0)));
+  s.r = max(max(max(-s.cx, s.cx - (nx - 1)), max(-s.cy, s.cy - (ny - 1))), 0);
+  s.r_last = max(max(s.cx, nx - 1 - s.cx), max(s.cy, ny - 1 - s.cy));
+  s.j = max(s.cy - s.r, 0);
+  s.i = first_i(s, s.j);
+  s.new_ring = true;
+  s.k = 0u;
+  s.k_end = 0u;
+  s.best = kHuge;
+  return s;
+}
+
+// One step of the search: test one face, or open the next cell of the rings. Returns false when
+// the search is over (s.best is then Eq. 2's minimum).
+bool step(inout Search s) {
+  if (s.k < s.k_end) {
+    MatchingFace f = faces[cell_faces[s.k]];
+    s.k += 1u;
+    float normal_factor = 1.0 + length(s.n - f.normal.xyz);
+    vec3 middle = (f.a.xyz + f.b.xyz + f.c.xyz) * (1.0 / 3.0);
+    float sphere_gap = max(length(s.q - middle) - f.a.w, 0.0);
+    if ((1.0 + params.lambda * sphere_gap) * normal_factor < s.best) {
+      float dist2 = f.normal.w != 0.0
+          ? min(segment_distance2(s.q, f.a.xyz, f.b.xyz),
+                min(segment_distance2(s.q, f.a.xyz, f.c.xyz), segment_distance2(s.q, f.b.xyz, f.c.xyz)))
+          : triangle_distance2(s.q, f.a.xyz, f.b.xyz, f.c.xyz);
+      s.best = min(s.best, (1.0 + params.lambda * sqrt(dist2)) * normal_factor);
+    }
+    return true;
+  }
+  if (s.r > s.r_last) return false;
+  if (s.new_ring) {
+    // Every face not yet seen lies in rings >= r, at least (r-1) cells away in x or y, and
+    // D >= 1 + lambda * Dist.
+    float bound = max(float(s.r - 1) * params.cell_size, s.box_distance);
+    if (1.0 + params.lambda * bound >= s.best) return false;
+    s.new_ring = false;
+  }
+  int nx = params.grid_nx;
+  int ny = params.grid_ny;
+  if (s.i >= 0 && s.i < nx) {
+    uint cell = uint(s.j * nx + s.i);
+    s.k = cell_start[cell];
+    s.k_end = cell_start[cell + 1u];
+  }
+  // Ring r, row by row: whole rows at j = cy -+ r, only the two side cells in between.
+  bool full_row = (s.j == s.cy - s.r) || (s.j == s.cy + s.r);
+  if (full_row && s.i < min(s.cx + s.r, nx - 1)) {
+    s.i += 1;
+  } else if (!full_row && s.i == s.cx - s.r) {
+    s.i = s.cx + s.r;
+  } else {
+    s.j += 1;
+    if (s.j > min(s.cy + s.r, ny - 1)) {
+      s.r += 1;
+      s.j = max(s.cy - s.r, 0);
+      s.new_ring = true;
+    }
+    s.i = first_i(s, s.j);
+  }
+  return true;
+}
+
+// llvmpipe ends every loop of an invocation once 65535 iterations have run in total, counted
+// per SIMD vector. So the whole search is one flat loop whose lanes each count their steps
+// (the vector then runs as many iterations as its busiest lane), and an invocation over budget
+// stops and leaves its unfinished costs as the host set them, for the host to compute.
 void main() {
   uint id = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   if (id >= params.invocation_count) return;
   uint point_count = params.point_count;
+  uint c;
+  uint c_end;
+  uint i;
   if (params.mapping == MATCHING_COST_PER_PAIR) {
-    uint c = id / point_count;
-    uint i = id - c * point_count;
-    MatchingPoint p = points[i];
-    costs[id] = point_cost(p.position.xyz - vec3(translations[c], 0.0), p.normal.xyz);
+    c = id / point_count;
+    c_end = c + 1u;
+    i = id - c * point_count;
   } else {
-    MatchingPoint p = points[id];
-    for (uint c = 0u; c < params.candidate_count; ++c)
-      costs[c * point_count + id] = point_cost(p.position.xyz - vec3(translations[c], 0.0), p.normal.xyz);
+    c = 0u;
+    c_end = params.candidate_count;
+    i = id;
+  }
+  MatchingPoint p = points[i];
+  Search s = start_search(p.position.xyz - vec3(translations[c], 0.0), p.normal.xyz);
+  uint budget = params.iteration_budget == 0u ? 0xFFFFFFFFu : params.iteration_budget;
+  for (uint iteration = 0u; iteration < budget; ++iteration) {
+    if (step(s)) continue;
+    costs[c * point_count + i] = s.best;
+    c += 1u;
+    if (c >= c_end) break;
+    s = start_search(p.position.xyz - vec3(translations[c], 0.0), p.normal.xyz);
   }
 }

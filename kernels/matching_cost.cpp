@@ -138,6 +138,10 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
   upload(faces_, faces.data(), faces.size() * sizeof(MatchingFace));
   upload(cell_start_, start.data(), start.size() * sizeof(std::uint32_t));
   upload(cell_faces_, members.data(), members.size() * sizeof(std::uint32_t));
+  // Host copies for pairs the device leaves unfinished (device memory may be slow to read).
+  host_faces_ = std::move(faces);
+  host_cell_start_ = std::move(start);
+  host_cell_faces_ = std::move(members);
 }
 
 MatchingCost::~MatchingCost() = default;
@@ -156,6 +160,7 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
   if (points.size() != normals.size())
     invalid(std::to_string(points.size()) + " points but " + std::to_string(normals.size()) + " normals");
   last_dispatches_ = 0;
+  last_fallbacks_ = 0;
   last_timing_ = {};
   const std::size_t point_count = points.size();
   const std::size_t candidate_count = translations.size();
@@ -190,6 +195,9 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
   params.grid_nx = grid_nx_;
   params.grid_ny = grid_ny_;
   params.mapping = options_.mapping == MatchingCostMapping::per_pair ? MATCHING_COST_PER_PAIR : MATCHING_COST_PER_POINT;
+  // A margin below the driver's limit for the few loops the compiler may add around ours.
+  const std::uint32_t loop_limit = device_.max_loop_iterations();
+  params.iteration_budget = loop_limit == 0 ? 0u : loop_limit - std::min<std::uint32_t>(loop_limit / 2, 256u);
 
   for (std::size_t p0 = 0; p0 < point_count; p0 += chunk_points) {
     const std::size_t pn = std::min(chunk_points, point_count - p0);
@@ -199,6 +207,8 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
     for (std::size_t c0 = 0; c0 < candidate_count; c0 += batch_candidates) {
       const std::size_t cn = std::min(batch_candidates, candidate_count - c0);
       std::memcpy(translation_buffer.data(), translations.data() + c0, cn * sizeof(vec2));
+      // Costs are >= 1; a negative one after the dispatch marks a pair the device left unfinished.
+      std::fill_n(static_cast<float*>(cost_buffer.data()), pn * cn, -1.0f);
       params.point_count = static_cast<std::uint32_t>(pn);
       params.candidate_count = static_cast<std::uint32_t>(cn);
       params.invocation_count =
@@ -210,8 +220,18 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
       if (timing.device_seconds >= 0.0)
         last_timing_.device_seconds = std::max(last_timing_.device_seconds, 0.0) + timing.device_seconds;
       const auto* costs = static_cast<const float*>(cost_buffer.data());
-      for (std::size_t c = 0; c < cn; ++c)
-        std::memcpy(result.data() + (c0 + c) * point_count + p0, costs + c * pn, pn * sizeof(float));
+      for (std::size_t c = 0; c < cn; ++c) {
+        float* row = result.data() + (c0 + c) * point_count + p0;
+        std::memcpy(row, costs + c * pn, pn * sizeof(float));
+        for (std::size_t i = 0; i < pn; ++i) {
+          if (row[i] >= 0.0f) continue;
+          const glm::vec2 t = translations[c0 + c];
+          row[i] = kernels::matching_cost_cpu_point(host_faces_.data(), host_cell_start_.data(),
+                                                    host_cell_faces_.data(), params,
+                                                    points[p0 + i] - glm::vec3(t, 0.0f), normals[p0 + i]);
+          ++last_fallbacks_;
+        }
+      }
     }
   }
   return result;

@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "device.h"
+#include "matching_cost_layout.h"
 
 namespace meshquilt {
 
@@ -48,7 +49,9 @@ struct MatchingCostOptions {
 //! zero-area face). Each minimum is exact (a ring search over an x-y grid of the swatch that
 //! stops once no unvisited face can beat the best D), computed in float32 on the device; the
 //! sums are taken in double on the host, in point order. Vulkan and CPU agree within 1e-5
-//! relative per point. Reuse one object for all seeds of a synthesis.
+//! relative per point. A device with a loop limit (lavapipe) leaves searches longer than the
+//! limit unfinished; the host finishes them with the C++ twin, so results never depend on it.
+//! Reuse one object for all seeds of a synthesis.
 class MatchingCost {
  public:
   //! Builds the grid and uploads the swatch.
@@ -75,6 +78,9 @@ class MatchingCost {
 
   //! Dispatches made by the last score()/point_costs() call and their summed timing.
   std::size_t last_dispatch_count() const { return last_dispatches_; }
+  //! Pairs of the last call that hit the device's loop limit (Device::max_loop_iterations) and
+  //! were finished on the host by the C++ twin.
+  std::size_t last_host_fallback_count() const { return last_fallbacks_; }
   const engine::DispatchTiming& last_timing() const { return last_timing_; }
   //! The grid actually used: cells along x and y, and the cell edge.
   int grid_nx() const { return grid_nx_; }
@@ -98,7 +104,11 @@ class MatchingCost {
   std::unique_ptr<engine::Buffer> points_;
   std::unique_ptr<engine::Buffer> translations_;
   std::unique_ptr<engine::Buffer> costs_;
+  std::vector<kernels::matching_cost_layout::MatchingFace> host_faces_;
+  std::vector<std::uint32_t> host_cell_start_;
+  std::vector<std::uint32_t> host_cell_faces_;
   std::size_t last_dispatches_ = 0;
+  std::size_t last_fallbacks_ = 0;
   engine::DispatchTiming last_timing_;
 };
 

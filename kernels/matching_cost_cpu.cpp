@@ -72,6 +72,8 @@ struct Swatch {
   const MatchingCostParams& params;
 };
 
+// The shader runs this search as one flat loop of steps (see matching_cost.comp, because of
+// llvmpipe's loop limiter); the order in which cells and faces are visited is the same.
 float point_cost(const Swatch& s, vec3 q, vec3 n) {
   const MatchingCostParams& params = s.params;
   const float cs = params.cell_size;
@@ -125,6 +127,12 @@ float point_cost(const Swatch& s, vec3 q, vec3 n) {
 }
 
 }  // namespace
+
+float matching_cost_cpu_point(const MatchingFace* faces, const std::uint32_t* cell_start,
+                              const std::uint32_t* cell_faces, const MatchingCostParams& params, glm::vec3 q,
+                              glm::vec3 n) {
+  return point_cost(Swatch{faces, cell_start, cell_faces, params}, q, n);
+}
 
 void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
   MatchingCostParams params;

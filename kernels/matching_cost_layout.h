@@ -56,7 +56,8 @@ struct MatchingCostParams {
   uint candidate_count;  // translations bound in this dispatch
   uint invocation_count; // pairs (per pair) or points (per point)
   uint mapping;          // MATCHING_COST_PER_PAIR or MATCHING_COST_PER_POINT
-  uint padding0;
+  uint iteration_budget; // loop iterations an invocation may run (0: unlimited); pairs left
+                         // unfinished keep the value the host put in their cost (negative)
   uint padding1;
 };
 
@@ -66,7 +67,8 @@ static_assert(sizeof(MatchingPoint) == 32 && offsetof(MatchingPoint, normal) == 
 static_assert(sizeof(vec2) == 8, "std430 vec2 array stride");
 static_assert(sizeof(MatchingCostParams) == 48);
 static_assert(offsetof(MatchingCostParams, cell_size) == 8 && offsetof(MatchingCostParams, grid_nx) == 16 &&
-              offsetof(MatchingCostParams, point_count) == 24 && offsetof(MatchingCostParams, mapping) == 36);
+              offsetof(MatchingCostParams, point_count) == 24 && offsetof(MatchingCostParams, mapping) == 36 &&
+              offsetof(MatchingCostParams, iteration_budget) == 40);
 }  // namespace meshquilt::kernels::matching_cost_layout
 #endif
 

@@ -1,0 +1,417 @@
+// The matching_cost kernel (Eq. 1-3) on both back ends against an independent brute-force
+// reference in double: every face, distance by projection onto the plane or the nearest edge.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "device.h"
+#include "error.h"
+#include "matching_cost.h"
+
+namespace meshquilt {
+namespace {
+
+using engine::Backend;
+using glm::dvec3;
+
+// Per point: |device - reference| <= kTolerance * max(1, |reference|). D >= 1 always, so this is
+// a relative tolerance of 1e-5 on float32 minima.
+constexpr double kTolerance = 1e-5;
+
+bool ci() {
+  const char* value = std::getenv("CI");
+  return value && std::string(value) == "true";
+}
+
+std::unique_ptr<engine::Device> open_backend(Backend backend, std::string* why) {
+  try {
+    return engine::open_device(backend == Backend::cpu ? engine::BackendChoice::cpu : engine::BackendChoice::vulkan);
+  } catch (const DeviceError& error) {
+    *why = error.what();
+    return nullptr;
+  }
+}
+
+// ---- the reference: brute force over all faces, in double --------------------------------
+
+double segment_distance(dvec3 p, dvec3 a, dvec3 b) {
+  const dvec3 ab = b - a;
+  const double length2 = glm::dot(ab, ab);
+  const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * ab));
+}
+
+// Projects p onto the triangle's plane; inside (by edge-side tests) the distance is the height,
+// otherwise the nearest point lies on an edge.
+double triangle_distance(dvec3 p, dvec3 a, dvec3 b, dvec3 c) {
+  const dvec3 n = glm::cross(b - a, c - a);
+  const double n2 = glm::dot(n, n);
+  const double edges = std::min({segment_distance(p, a, b), segment_distance(p, b, c), segment_distance(p, c, a)});
+  if (n2 <= 0.0) return edges;
+  const dvec3 projected = p - n * (glm::dot(p - a, n) / n2);
+  const bool inside = glm::dot(glm::cross(b - a, projected - a), n) >= 0.0 &&
+                      glm::dot(glm::cross(c - b, projected - b), n) >= 0.0 &&
+                      glm::dot(glm::cross(a - c, projected - c), n) >= 0.0;
+  return inside ? std::abs(glm::dot(p - a, n)) / std::sqrt(n2) : edges;
+}
+
+struct Reference {
+  const MatchingSwatch& swatch;
+
+  double point_cost(dvec3 q, dvec3 normal) const {
+    double best = INFINITY;
+    for (const auto& t : swatch.triangles) {
+      const dvec3 a(swatch.positions[t[0]]), b(swatch.positions[t[1]]), c(swatch.positions[t[2]]);
+      const dvec3 cross = glm::cross(b - a, c - a);
+      const double length = glm::length(cross);
+      const dvec3 face_normal = length > 0.0 ? cross / length : dvec3(0.0);
+      const double d = (1.0 + swatch.lambda * triangle_distance(q, a, b, c)) * (1.0 + glm::length(normal - face_normal));
+      best = std::min(best, d);
+    }
+    return best;
+  }
+
+  // #T by #P, candidate-major like MatchingCost::point_costs.
+  std::vector<double> point_costs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
+                                  const std::vector<glm::vec2>& translations) const {
+    std::vector<double> costs;
+    for (const glm::vec2& t : translations)
+      for (std::size_t i = 0; i < points.size(); ++i)
+        costs.push_back(point_cost(dvec3(points[i]) - dvec3(t.x, t.y, 0.0), dvec3(normals[i])));
+    return costs;
+  }
+};
+
+// ---- inputs -----------------------------------------------------------------------------
+
+struct Query {
+  std::vector<glm::vec3> points;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> translations;
+};
+
+glm::vec3 random_unit(std::mt19937& rng) {
+  std::normal_distribution<float> gauss;
+  for (;;) {
+    const glm::vec3 v(gauss(rng), gauss(rng), gauss(rng));
+    if (glm::length(v) > 1e-3f) return glm::normalize(v);
+  }
+}
+
+// Random triangles over [0,4]x[0,3] (some long, some degenerate), random points around it,
+// translations that keep some queries inside the grid and push others far outside.
+MatchingSwatch random_swatch(std::mt19937& rng, int faces) {
+  std::uniform_real_distribution<float> x(0.0f, 4.0f), y(0.0f, 3.0f), z(0.0f, 0.4f), size(-0.3f, 0.3f);
+  MatchingSwatch swatch;
+  for (int f = 0; f < faces; ++f) {
+    const glm::vec3 a(x(rng), y(rng), z(rng));
+    glm::vec3 b = a + glm::vec3(size(rng), size(rng), size(rng));
+    glm::vec3 c = a + glm::vec3(size(rng), size(rng), size(rng));
+    if (f % 17 == 0) c = a + 0.5f * (b - a);      // collinear: zero area
+    if (f % 23 == 0) b = a;                       // repeated vertex
+    if (f % 29 == 0) c = a + glm::vec3(1.5f, 0.2f, 0.0f);  // spans several cells
+    const auto base = static_cast<std::uint32_t>(swatch.positions.size());
+    swatch.positions.insert(swatch.positions.end(), {a, b, c});
+    swatch.triangles.push_back({base, base + 1, base + 2});
+  }
+  swatch.cell_size = 0.25f;
+  swatch.lambda = 1.0f;
+  return swatch;
+}
+
+Query random_query(std::mt19937& rng, int points, int candidates) {
+  std::uniform_real_distribution<float> x(-1.0f, 5.0f), y(-1.0f, 4.0f), z(-0.3f, 0.7f), shift(-2.0f, 2.0f);
+  Query query;
+  for (int i = 0; i < points; ++i) {
+    query.points.emplace_back(x(rng), y(rng), z(rng));
+    query.normals.push_back(random_unit(rng));
+  }
+  for (int c = 0; c < candidates; ++c) query.translations.emplace_back(shift(rng), shift(rng));
+  query.translations.emplace_back(40.0f, -25.0f);  // every query far outside the grid
+  query.translations.emplace_back(0.0f, 0.0f);
+  return query;
+}
+
+// A torus of radius 1 and tube 0.3 lying in x-y, as a procedural stand-in for a real swatch.
+MatchingSwatch torus_swatch(int around, int tube) {
+  MatchingSwatch swatch;
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      const double u = 2.0 * M_PI * i / around, v = 2.0 * M_PI * j / tube;
+      const double r = 1.0 + 0.3 * std::cos(v);
+      swatch.positions.emplace_back(r * std::cos(u), r * std::sin(u), 0.3 * std::sin(v));
+    }
+  auto index = [&](int i, int j) { return static_cast<std::uint32_t>((i % around) * tube + (j % tube)); };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      swatch.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+      swatch.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  swatch.cell_size = 2.6f / 16.0f;
+  return swatch;
+}
+
+// Reads a triangle OFF file; an empty swatch when the file is missing.
+MatchingSwatch read_off(const std::filesystem::path& path) {
+  MatchingSwatch swatch;
+  std::ifstream in(path);
+  std::string header;
+  if (!(in >> header) || header != "OFF") return swatch;
+  std::size_t vertices = 0, faces = 0, edges = 0;
+  in >> vertices >> faces >> edges;
+  swatch.positions.resize(vertices);
+  for (auto& p : swatch.positions) in >> p.x >> p.y >> p.z;
+  for (std::size_t f = 0; f < faces; ++f) {
+    int n = 0;
+    std::array<std::uint32_t, 3> t{};
+    in >> n >> t[0] >> t[1] >> t[2];
+    if (n != 3 || !in) return {};
+    swatch.triangles.push_back(t);
+  }
+  return swatch;
+}
+
+// Output-like points: swatch vertices displaced a little, with their jittered vertex normals.
+Query points_near(const MatchingSwatch& swatch, std::mt19937& rng, int points, const std::vector<glm::vec2>& shifts) {
+  std::vector<glm::vec3> normals(swatch.positions.size(), glm::vec3(0.0f));
+  for (const auto& t : swatch.triangles) {
+    const glm::vec3 n = glm::cross(swatch.positions[t[1]] - swatch.positions[t[0]],
+                                   swatch.positions[t[2]] - swatch.positions[t[0]]);
+    for (std::uint32_t v : t) normals[v] += n;
+  }
+  std::uniform_int_distribution<std::size_t> pick(0, swatch.positions.size() - 1);
+  std::normal_distribution<float> jitter(0.0f, 0.02f);
+  Query query;
+  for (int i = 0; i < points; ++i) {
+    const std::size_t v = pick(rng);
+    query.points.push_back(swatch.positions[v] + glm::vec3(jitter(rng), jitter(rng), jitter(rng)));
+    const glm::vec3 n = normals[v] + glm::vec3(jitter(rng), jitter(rng), jitter(rng)) * glm::length(normals[v]);
+    query.normals.push_back(glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0, 0, 1));
+  }
+  query.translations = shifts;
+  return query;
+}
+
+void expect_close(const std::vector<float>& actual, const std::vector<double>& expected, const char* what) {
+  ASSERT_EQ(actual.size(), expected.size()) << what;
+  std::size_t failures = 0;
+  for (std::size_t k = 0; k < actual.size(); ++k) {
+    const double error = std::abs(actual[k] - expected[k]);
+    if (!(error <= kTolerance * std::max(1.0, std::abs(expected[k])))) {
+      if (++failures <= 5) ADD_FAILURE() << what << " pair " << k << ": " << actual[k] << " vs " << expected[k];
+    }
+  }
+  EXPECT_EQ(failures, 0u) << what;
+}
+
+// ---- the tests, one body per back end ---------------------------------------------------
+
+class MatchingCostTest : public ::testing::TestWithParam<Backend> {
+ protected:
+  void SetUp() override {
+    std::string why;
+    device_ = open_backend(GetParam(), &why);
+    if (!device_) {
+      if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
+      GTEST_SKIP() << "no Vulkan device: " << why;
+    }
+  }
+
+  void check_against_reference(const MatchingSwatch& swatch, const Query& query, const char* what) {
+    MatchingCost cost(*device_, swatch);
+    const std::vector<float> minima = cost.point_costs(query.points, query.normals, query.translations);
+    const std::vector<double> expected = Reference{swatch}.point_costs(query.points, query.normals, query.translations);
+    expect_close(minima, expected, what);
+    const std::vector<double> scores = cost.score(query.points, query.normals, query.translations);
+    ASSERT_EQ(scores.size(), query.translations.size());
+    for (std::size_t c = 0; c < scores.size(); ++c) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < query.points.size(); ++i) sum += expected[c * query.points.size() + i];
+      EXPECT_NEAR(scores[c], sum, kTolerance * sum) << what << " candidate " << c;
+    }
+  }
+
+  std::unique_ptr<engine::Device> device_;
+};
+
+TEST_P(MatchingCostTest, ClosedFormSingleTriangle) {
+  MatchingSwatch swatch;
+  swatch.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  swatch.triangles = {{0, 1, 2}};
+  swatch.cell_size = 0.1f;
+  swatch.lambda = 2.0f;
+  MatchingCost cost(*device_, swatch);
+  const std::vector<glm::vec3> points = {{0.25f, 0.25f, 0.5f}, {0.25f, 0.25f, 0.5f}, {2.0f, 2.0f, 0.0f},
+                                         {1.25f, 1.25f, 0.5f}};
+  const std::vector<glm::vec3> normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {1, 0, 0}};
+  const std::vector<glm::vec2> translations = {{0, 0}, {1, 1}};
+  const std::vector<float> minima = cost.point_costs(points, normals, translations);
+  const double far = 1.5 * std::sqrt(2.0);  // (2,2) to the hypotenuse's midpoint (0.5,0.5)
+  const double from_shift = std::sqrt(2.0 * 1.25 * 1.25);  // (1.25,1.25,.5) to the vertex... see below
+  (void)from_shift;
+  const std::vector<double> expected = {
+      1.0 + 2.0 * 0.5, (1.0 + 2.0 * 0.5) * 3.0, 1.0 + 2.0 * far,
+      // (1.25,1.25,.5): nearest point (0.5,0.5,0); normal (1,0,0) vs (0,0,1) differ by sqrt(2)
+      (1.0 + 2.0 * std::sqrt(2 * 0.75 * 0.75 + 0.25)) * (1.0 + std::sqrt(2.0)),
+      // moved by (1,1): the first two points sit above (-0.75,-0.75), nearest the origin vertex
+      (1.0 + 2.0 * std::sqrt(2 * 0.75 * 0.75 + 0.25)), (1.0 + 2.0 * std::sqrt(2 * 0.75 * 0.75 + 0.25)) * 3.0,
+      1.0 + 2.0 * std::sqrt(2.0 * 0.5 * 0.5),  // (1,1,0): distance to the hypotenuse
+      (1.0 + 2.0 * 0.5) * (1.0 + std::sqrt(2.0))};
+  ASSERT_EQ(minima.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(minima[k], expected[k], 1e-6 * expected[k]) << k;
+}
+
+TEST_P(MatchingCostTest, RandomTrianglesMatchBruteForce) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937 rng(seed);
+    const MatchingSwatch swatch = random_swatch(rng, 150 + 50 * static_cast<int>(seed));
+    const Query query = random_query(rng, 200, 14);
+    check_against_reference(swatch, query, ("seed " + std::to_string(seed)).c_str());
+  }
+}
+
+TEST_P(MatchingCostTest, WeightAndCellSizeDoNotChangeTheMinimum) {
+  std::mt19937 rng(11);
+  MatchingSwatch swatch = random_swatch(rng, 120);
+  const Query query = random_query(rng, 80, 6);
+  for (float lambda : {0.0f, 0.3f, 5.0f})
+    for (float cell : {0.05f, 0.7f, 10.0f}) {
+      swatch.lambda = lambda;
+      swatch.cell_size = cell;
+      check_against_reference(swatch, query, ("lambda " + std::to_string(lambda) + " cell " + std::to_string(cell)).c_str());
+    }
+}
+
+TEST_P(MatchingCostTest, TorusMatchesBruteForce) {
+  std::mt19937 rng(5);
+  const MatchingSwatch swatch = torus_swatch(40, 16);
+  std::vector<glm::vec2> shifts;
+  for (int i = -2; i <= 2; ++i) shifts.emplace_back(i * swatch.cell_size, -i * 0.5f * swatch.cell_size);
+  check_against_reference(swatch, points_near(swatch, rng, 300, shifts), "torus");
+}
+
+TEST_P(MatchingCostTest, FlattenedBunnyMatchesBruteForce) {
+  const std::filesystem::path file = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/bunny.off";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  MatchingSwatch swatch = read_off(file);
+  ASSERT_GT(swatch.triangles.size(), 1000u) << file;
+  // Swatch frame: flatten to a slab, thinnest axis along z, and take 1/16 of the shorter side.
+  glm::vec3 low(INFINITY), high(-INFINITY);
+  for (glm::vec3& p : swatch.positions) {
+    p = glm::vec3(p.x, p.y, 0.15f * p.z);
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  swatch.cell_size = std::min(high.x - low.x, high.y - low.y) / 16.0f;
+  std::vector<glm::vec2> shifts;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) shifts.emplace_back(i * swatch.cell_size, j * swatch.cell_size);
+  std::mt19937 rng(9);
+  check_against_reference(swatch, points_near(swatch, rng, 150, shifts), "bunny");
+}
+
+TEST_P(MatchingCostTest, EmptyInputs) {
+  std::mt19937 rng(3);
+  MatchingCost cost(*device_, random_swatch(rng, 20));
+  const std::vector<glm::vec3> none;
+  const std::vector<glm::vec2> shifts = {{0, 0}, {1, 0}, {0, 1}};
+  EXPECT_EQ(cost.score(none, none, shifts), std::vector<double>(3, 0.0));
+  EXPECT_TRUE(cost.point_costs(none, none, shifts).empty());
+  const std::vector<glm::vec3> one = {{1, 1, 1}};
+  EXPECT_TRUE(cost.score(one, one, {}).empty());
+  EXPECT_EQ(cost.last_dispatch_count(), 0u);
+}
+
+TEST_P(MatchingCostTest, RejectsBadInput) {
+  MatchingSwatch swatch;
+  swatch.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  swatch.cell_size = 0.5f;
+  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);  // no faces
+  swatch.triangles = {{0, 1, 3}};
+  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);  // index out of range
+  swatch.triangles = {{0, 1, 2}};
+  for (float cell : {0.0f, -1.0f, NAN, INFINITY}) {
+    swatch.cell_size = cell;
+    EXPECT_THROW(MatchingCost(*device_, swatch), InputError) << cell;
+  }
+  swatch.cell_size = 0.5f;
+  swatch.lambda = -1.0f;
+  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);
+  swatch.lambda = 1.0f;
+  swatch.positions[1].x = NAN;
+  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);
+  swatch.positions[1].x = 1.0f;
+  MatchingCost cost(*device_, swatch);
+  EXPECT_THROW(cost.score({{0, 0, 0}}, {}, {{0, 0}}), InputError);
+  // A cell far smaller than the swatch is coarsened, not refused.
+  swatch.cell_size = 1e-6f;
+  MatchingCost fine(*device_, swatch);
+  EXPECT_LE(static_cast<long long>(fine.grid_nx()) * fine.grid_ny(), 1LL << 22);
+  EXPECT_NEAR(fine.score({{0.2f, 0.2f, 1.0f}}, {{0, 0, 1}}, {{0, 0}})[0], 2.0, 1e-5);
+}
+
+TEST_P(MatchingCostTest, BatchingAndMappingDoNotChangeResults) {
+  std::mt19937 rng(21);
+  const MatchingSwatch swatch = random_swatch(rng, 200);
+  const Query query = random_query(rng, 100, 8);  // 10 candidates, 1000 pairs
+  MatchingCost whole(*device_, swatch);
+  const std::vector<float> reference = whole.point_costs(query.points, query.normals, query.translations);
+  EXPECT_EQ(whole.last_dispatch_count(), 1u);
+  struct Case {
+    MatchingCostOptions options;
+    std::size_t dispatches;
+  };
+  const std::vector<Case> cases = {
+      {{MatchingCostMapping::per_pair, 250}, 5},   // 2 candidates x 100 points per dispatch
+      {{MatchingCostMapping::per_pair, 37}, 30},   // 37 points, 1 candidate: 3 chunks x 10
+      {{MatchingCostMapping::per_point, 0}, 1},
+      {{MatchingCostMapping::per_point, 300}, 4},  // 3 candidates per dispatch
+      {{MatchingCostMapping::per_point, 64}, 20},  // 64 points: 2 chunks x 10
+  };
+  for (const Case& c : cases) {
+    MatchingCost batched(*device_, swatch, c.options);
+    EXPECT_EQ(batched.point_costs(query.points, query.normals, query.translations), reference)
+        << "max pairs " << c.options.max_pairs_per_dispatch;
+    EXPECT_EQ(batched.last_dispatch_count(), c.dispatches) << "max pairs " << c.options.max_pairs_per_dispatch;
+    // Scoring twice is deterministic.
+    EXPECT_EQ(batched.score(query.points, query.normals, query.translations),
+              whole.score(query.points, query.normals, query.translations));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, MatchingCostTest, ::testing::Values(Backend::cpu, Backend::vulkan),
+                         [](const auto& info) { return std::string(engine::backend_name(info.param)); });
+
+// Vulkan against its C++ twin, pair by pair.
+TEST(MatchingCostParity, VulkanAgreesWithCpuTwin) {
+  std::string why;
+  auto vulkan = open_backend(Backend::vulkan, &why);
+  if (!vulkan) {
+    if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
+    GTEST_SKIP() << "no Vulkan device: " << why;
+  }
+  auto cpu = engine::open_device(engine::BackendChoice::cpu);
+  std::mt19937 rng(77);
+  const MatchingSwatch swatch = random_swatch(rng, 400);
+  const Query query = random_query(rng, 500, 30);
+  const std::vector<float> a = MatchingCost(*vulkan, swatch).point_costs(query.points, query.normals, query.translations);
+  const std::vector<float> b = MatchingCost(*cpu, swatch).point_costs(query.points, query.normals, query.translations);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k)
+    ASSERT_LE(std::abs(a[k] - b[k]), kTolerance * std::max(1.0f, std::abs(b[k]))) << k << ": " << a[k] << " vs " << b[k];
+}
+
+}  // namespace
+}  // namespace meshquilt
