@@ -318,6 +318,11 @@ TEST_F(MeshIoTest, StlAsciiAndBinaryShareCorners) {
   ASSERT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(m.triangles, a.triangles);
   EXPECT_EQ(m.positions, a.positions);
+  // Trailing bytes are tolerated when the header cannot be ASCII; with "solid" they are an error.
+  std::string other = b.data + "trailing";
+  other.replace(0, 5, "xxxxx");
+  EXPECT_EQ(read_mesh(write_text("c.stl", other)).triangles, a.triangles);
+  EXPECT_THROW(read_mesh(write_text("d.stl", b.data + "trailing")), InputError);
 }
 
 TEST_F(MeshIoTest, OpenErrorsAndFormatErrors) {

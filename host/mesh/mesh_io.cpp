@@ -244,9 +244,10 @@ TriMesh read_off(std::string_view text, const std::string& name) {
   cursor.skip_line();
 
   TriMesh mesh;
-  const auto room = static_cast<int64_t>(text.size() / 2);  // a bound on what the file can hold
-  mesh.positions.reserve(static_cast<size_t>(std::min(num_vertices, room)));
-  mesh.triangles.reserve(static_cast<size_t>(std::min(num_faces, room)));
+  // Reserve no more than the file can hold ("0 0 0\n", "3 0 1 2\n"): the counts may be hostile.
+  const auto size = static_cast<int64_t>(text.size());
+  mesh.positions.reserve(static_cast<size_t>(std::min(num_vertices, size / 6)));
+  mesh.triangles.reserve(static_cast<size_t>(std::min(num_faces, size / 8)));
   for (int64_t v = 0; v < num_vertices; ++v) {
     Vec3 p;
     for (int k = 0; k < 3; ++k) {
@@ -343,8 +344,27 @@ class BinaryReader {
     return true;
   }
   size_t remaining() const { return static_cast<size_t>(end_ - p_); }
+  static size_t min_row_bytes(const PlyElement& element) {
+    size_t bytes = 0;
+    for (const PlyProperty& property : element.properties) bytes += size_of(property.is_list ? property.count_type : property.type);
+    return std::max<size_t>(bytes, 1);
+  }
 
  private:
+  static size_t size_of(PlyType type) {
+    switch (type) {
+      case PlyType::int8:
+      case PlyType::uint8: return 1;
+      case PlyType::int16:
+      case PlyType::uint16: return 2;
+      case PlyType::int32:
+      case PlyType::uint32:
+      case PlyType::float32: return 4;
+      case PlyType::float64: return 8;
+    }
+    return 1;
+  }
+
   template <typename T>
   bool read_as(double& value) {
     if (static_cast<size_t>(end_ - p_) < sizeof(T)) return false;
@@ -377,6 +397,8 @@ class AsciiReader {
     return true;
   }
   size_t remaining() const { return static_cast<size_t>(cursor_.end - cursor_.p); }
+  // Each value takes at least one character and one separator.
+  static size_t min_row_bytes(const PlyElement& element) { return std::max<size_t>(2 * element.properties.size(), 1); }
 
  private:
   TextCursor cursor_;
@@ -474,7 +496,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
                            " of " + std::to_string(element.count));
     };
     // Reserve no more than the remaining bytes could hold (a hostile count must not exhaust memory).
-    const auto bound = static_cast<int64_t>(reader.remaining());
+    const auto bound = static_cast<int64_t>(reader.remaining() / reader.min_row_bytes(element));
     const bool is_vertex = element.name == "vertex";
     const bool is_face = element.name == "face";
     int ix = -1, iy = -1, iz = -1, iindices = -1, ielement = -1;
@@ -611,7 +633,11 @@ TriMesh read_stl(std::string_view data, const std::string& name) {
     if (std::endian::native == std::endian::big) {
       count = (count >> 24) | ((count >> 8) & 0xFF00u) | ((count << 8) & 0xFF0000u) | (count << 24);
     }
-    if (84 + 50 * static_cast<uint64_t>(count) == data.size()) {
+    // The size decides, not the header (binary headers may start with "solid" too); trailing
+    // bytes after the triangles are tolerated when the file cannot be ASCII.
+    const uint64_t expected = 84 + 50 * static_cast<uint64_t>(count);
+    const bool looks_ascii = data.substr(0, 5) == "solid";
+    if (expected == data.size() || (expected < data.size() && !looks_ascii)) {
       mesh.triangles.reserve(count);
       indexer.reserve(count);
       for (uint32_t f = 0; f < count; ++f) {
