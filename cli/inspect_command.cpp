@@ -1,11 +1,74 @@
+// `meshquilt inspect MESH [--swatch S] [--plane | --base B [--shell-height H]] [--json]`: the
+// quality report of a mesh (DESIGN.md section 8).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
 #include "commands.h"
 #include "error.h"
+#include "inspect/inspect_report.h"
+#include "mesh/mesh_io.h"
 
 namespace meshquilt::cli {
+namespace {
+
+struct InspectArgs {
+  std::filesystem::path mesh;
+  std::filesystem::path swatch;
+  std::filesystem::path base;
+  bool plane = false;
+  double shell_height = 0.0;
+  bool json = false;
+};
+
+}  // namespace
 
 void add_inspect_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("inspect", "(under construction)");
-  cmd->callback([] { throw Error(ExitCode::internal, "inspect: under construction"); });
+  auto args = std::make_shared<InspectArgs>();
+  std::ostringstream weld;
+  weld << kWeldTolerance;
+  auto* cmd = app.add_subcommand(
+      "inspect",
+      "Measure a mesh: faces and vertices after welding coincident vertices (within " + weld.str() +
+          " x the bbox diagonal), elements (vertex-connected components) and how many are closed "
+          "2-manifolds, boundary/non-manifold edges, pinched vertices, intersecting face pairs between and "
+          "within elements; optionally element-size KS distances to a swatch, plane coverage, or base "
+          "coverage and heights");
+  cmd->add_option("MESH", args->mesh, "mesh to inspect (.obj .ply .off .stl)")->required();
+  cmd->add_option("--swatch", args->swatch, "compare element area and extent distributions with this swatch");
+  auto* plane = cmd->add_flag("--plane", args->plane,
+                              "coverage of the x-y footprint (2% margin) on a grid of half the median "
+                              "element's x-y extent");
+  auto* base = cmd->add_option("--base", args->base,
+                               "base mesh: coverage of its area (within half the median element extent "
+                               "of a vertex's foot) and signed heights in units of its bbox diagonal");
+  auto* shell = cmd->add_option("--shell-height", args->shell_height,
+                                "shell height H in base bbox diagonals; counts vertices below the base or above H")
+                    ->check(CLI::PositiveNumber);
+  shell->needs(base);
+  plane->excludes(base);
+  cmd->add_flag("--json", args->json, "print one JSON object instead of the readable report");
+
+  cmd->callback([args, shell] {
+    const TriMesh mesh = read_mesh(args->mesh);
+    std::optional<TriMesh> swatch, base_mesh;
+    if (!args->swatch.empty()) swatch = read_mesh(args->swatch);
+    if (!args->base.empty()) base_mesh = read_mesh(args->base);
+    InspectOptions options;
+    options.plane = args->plane;
+    if (shell->count() > 0) options.shell_height = args->shell_height;
+    const InspectReport report =
+        inspect_mesh(mesh, options, swatch ? &*swatch : nullptr, base_mesh ? &*base_mesh : nullptr);
+    if (args->json) {
+      std::cout << to_json(report).dump(2) << "\n";
+    } else {
+      std::cout << args->mesh.string() << "\n" << to_text(report);
+    }
+  });
 }
 
 }  // namespace meshquilt::cli

@@ -1,0 +1,182 @@
+#include "inspect/inspect_report.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "error.h"
+#include "inspect/element_statistics.h"
+#include "inspect/element_topology.h"
+#include "spatial/intersecting_pairs.h"
+
+namespace meshquilt {
+namespace {
+
+class StageTimer {
+ public:
+  explicit StageTimer(std::vector<std::pair<std::string, double>>& out) : out_(out) {}
+  void lap(const char* name) {
+    const auto now = std::chrono::steady_clock::now();
+    out_.emplace_back(name, std::chrono::duration<double>(now - last_).count());
+    last_ = now;
+  }
+
+ private:
+  std::vector<std::pair<std::string, double>>& out_;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+TriMesh welded_or_throw(const TriMesh& mesh, double tolerance, const char* what) {
+  TriMesh welded = weld_vertices(mesh, tolerance);
+  welded.elements.clear();  // elements are the connected components here
+  if (welded.num_faces() == 0) throw InputError(std::string(what) + " has no faces after welding");
+  return welded;
+}
+
+// Median element size, with a fallback for flat or point-like elements so grids stay finite.
+double positive_median(const std::vector<double>& values, double fallback) {
+  const double m = median(values);
+  return m > 0.0 && std::isfinite(m) ? m : fallback;
+}
+
+}  // namespace
+
+InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, const TriMesh* swatch_input,
+                           const TriMesh* base_input) {
+  if (options.plane && base_input) throw InputError("inspect: --plane and --base exclude each other", ExitCode::invalid_option);
+  InspectReport report;
+  StageTimer timer(report.timings);
+  report.weld_tolerance = options.weld_tolerance;
+  const TriMesh mesh = welded_or_throw(input, options.weld_tolerance, "mesh");
+  report.faces = static_cast<int64_t>(mesh.num_faces());
+  report.vertices = static_cast<int64_t>(mesh.num_vertices());
+  timer.lap("weld");
+
+  const ElementTopology topology = element_topology(mesh);
+  report.elements = topology.elements;
+  report.closed_elements = topology.closed_elements;
+  report.boundary_edges = topology.boundary_edges;
+  report.nonmanifold_edges = topology.nonmanifold_edges;
+  report.nonmanifold_vertices = topology.nonmanifold_vertices;
+  timer.lap("topology");
+
+  const FaceIntersections pairs = find_intersecting_faces(mesh, topology.face_element);
+  report.intersecting_face_pairs = static_cast<int64_t>(pairs.different_elements.size());
+  report.self_intersecting_face_pairs = static_cast<int64_t>(pairs.same_element.size());
+  timer.lap("intersections");
+
+  Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const Vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double diagonal = glm::length(hi - lo);
+  const ElementMeasures measures = element_measures(mesh, topology.face_element, topology.elements);
+  report.median_element_area = median(measures.area);
+  report.median_element_extent = median(measures.extent);
+  timer.lap("element sizes");
+
+  if (swatch_input) {
+    const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, "swatch");
+    int32_t count = 0;
+    const std::vector<int32_t> swatch_elements = face_components(swatch, &count);
+    const ElementMeasures sm = element_measures(swatch, swatch_elements, count);
+    InspectReport::Swatch s;
+    s.elements = count;
+    s.intersecting_face_pairs = static_cast<int64_t>(find_intersecting_faces(swatch, swatch_elements).different_elements.size());
+    s.element_area_ks = ks_distance(measures.area, sm.area);
+    s.element_extent_ks = ks_distance(measures.extent, sm.extent);
+    report.swatch = s;
+    timer.lap("swatch");
+  }
+
+  if (options.plane) {
+    const double cell = 0.5 * positive_median(measures.xy_extent, 0.01 * std::max(hi.x - lo.x, hi.y - lo.y));
+    report.plane = plane_coverage(mesh, cell > 0.0 ? cell : 1.0, options.plane_options);
+    timer.lap("plane coverage");
+  }
+
+  if (base_input) {
+    const TriMesh base = welded_or_throw(*base_input, options.weld_tolerance, "base mesh");
+    BaseCoverageOptions base_options = options.base_options;
+    if (options.shell_height) base_options.shell_height = options.shell_height;
+    const double radius = 0.5 * positive_median(measures.extent, 0.01 * (diagonal > 0.0 ? diagonal : 1.0));
+    report.base = base_coverage(mesh, base, radius, base_options);
+    report.shell_height = base_options.shell_height;
+    timer.lap("base coverage");
+  }
+  return report;
+}
+
+nlohmann::ordered_json to_json(const InspectReport& r) {
+  nlohmann::ordered_json j;
+  j["faces"] = r.faces;
+  j["vertices"] = r.vertices;
+  j["weld_tolerance"] = r.weld_tolerance;
+  j["elements"] = r.elements;
+  j["closed_elements"] = r.closed_elements;
+  j["boundary_edges"] = r.boundary_edges;
+  j["nonmanifold_edges"] = r.nonmanifold_edges;
+  j["nonmanifold_vertices"] = r.nonmanifold_vertices;
+  j["intersecting_face_pairs"] = r.intersecting_face_pairs;
+  j["self_intersecting_face_pairs"] = r.self_intersecting_face_pairs;
+  j["median_element_area"] = r.median_element_area;
+  j["median_element_extent"] = r.median_element_extent;
+  if (r.swatch) {
+    j["swatch_elements"] = r.swatch->elements;
+    j["swatch_intersecting_face_pairs"] = r.swatch->intersecting_face_pairs;
+    j["element_area_ks"] = r.swatch->element_area_ks;
+    j["element_extent_ks"] = r.swatch->element_extent_ks;
+  }
+  if (r.plane) {
+    j["coverage"] = r.plane->coverage;
+    j["largest_gap"] = r.plane->largest_gap;
+    j["coverage_cell_size"] = r.plane->cell_size;
+    j["coverage_grid"] = {r.plane->cells_x, r.plane->cells_y};
+  }
+  if (r.base) {
+    j["coverage"] = r.base->coverage;
+    j["coverage_radius"] = r.base->radius;
+    j["height_min"] = r.base->height_min;
+    j["height_max"] = r.base->height_max;
+    if (r.shell_height) j["shell_height"] = *r.shell_height;
+    if (r.base->outside_shell_vertices) j["outside_shell_vertices"] = *r.base->outside_shell_vertices;
+  }
+  return j;
+}
+
+std::string to_text(const InspectReport& r) {
+  std::ostringstream s;
+  s << "mesh:          " << r.faces << " faces, " << r.vertices << " vertices (welded at " << r.weld_tolerance
+    << " x bbox diagonal)\n";
+  s << "elements:      " << r.elements << ", of which " << r.closed_elements << " closed 2-manifolds\n";
+  s << "defects:       " << r.boundary_edges << " boundary edges, " << r.nonmanifold_edges << " non-manifold edges, "
+    << r.nonmanifold_vertices << " pinched vertices\n";
+  s << "intersections: " << r.intersecting_face_pairs << " face pairs between elements, " << r.self_intersecting_face_pairs
+    << " within elements\n";
+  s << "element size:  median area " << r.median_element_area << ", median extent " << r.median_element_extent << "\n";
+  if (r.swatch) {
+    s << "swatch:        " << r.swatch->elements << " elements, " << r.swatch->intersecting_face_pairs
+      << " intersecting pairs; KS distance of element areas " << r.swatch->element_area_ks << ", of extents "
+      << r.swatch->element_extent_ks << "\n";
+  }
+  if (r.plane) {
+    s << "coverage:      " << r.plane->coverage << " of the x-y footprint, largest gap " << r.plane->largest_gap << " ("
+      << r.plane->cells_x << " x " << r.plane->cells_y << " cells of " << r.plane->cell_size << ")\n";
+  }
+  if (r.base) {
+    s << "coverage:      " << r.base->coverage << " of the base area (radius " << r.base->radius << ")\n";
+    s << "heights:       " << r.base->height_min << " to " << r.base->height_max << " base bbox diagonals";
+    if (r.base->outside_shell_vertices) {
+      s << ", " << *r.base->outside_shell_vertices << " vertices outside the shell [0, " << *r.shell_height << "]";
+    }
+    s << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace meshquilt
