@@ -4,13 +4,24 @@
 //! Kolmogorov max-flow) and stitching of the two cut parts into one connected component.
 
 #include <functional>
+#include <string>
 
 #include "mesh/tri_mesh.h"
+#include "quilt/stitching.h"
 
 namespace meshquilt {
 
+//! Distances below are multiples of the larger mean edge length of the two elements.
 struct MergeOptions {
-  // Implementation-defined tuning (document defaults here).
+  double coverage_factor = 1.5;  //!< a face or vertex is "covered" by the other element when it
+                                 //!< lies within this distance of it (the paper's "has a
+                                 //!< corresponding vertex", robust to different tessellations)
+  double frontier_factor = 2.0;  //!< x coverage distance: faces this close to an uncovered face of
+                                 //!< the other element count as "adjacent to a face with no
+                                 //!< corresponding vertices" (paper's SINK rule)
+  double seam_margin_factor = 1.5;  //!< input faces this close to the output's cut loops carry no
+                                    //!< terminal link, so the input's cut may follow them freely
+  StitchOptions stitch;             //!< seam alignment, Eq. 5 deformation, checks
 };
 
 enum class MergeOutcome {
@@ -21,13 +32,24 @@ enum class MergeOutcome {
 
 struct MergeResult {
   MergeOutcome outcome = MergeOutcome::kept_out;
-  TriMesh element;  //!< the element to keep (no `elements` ids)
+  TriMesh element;        //!< the element to keep (no `elements` ids)
+  std::string fallback;   //!< why a stitch was abandoned for a whole element (empty otherwise)
+  int32_t seam_loops = 0; //!< loop pairs welded when stitched
 };
 
 //! Merges a related pair. `in_overlap(p)` tells whether a point lies in the overlapping region
 //! (a face is inside when its centroid is). Faces outside the overlap are kept (SOURCE); the
 //! result is one connected component, a closed 2-manifold whenever both inputs were; when a
 //! clean stitch is impossible, the more complete element is kept whole instead.
+//! Steps: (1) an element wholly inside the overlap yields to the other; (2) the output element is
+//! cut by a minimum cut on its dual graph (Eq. 7 weights; SOURCE: faces outside the overlap; SINK:
+//! faces around vertices whose closest input face lies outside the overlap or near input faces
+//! the output does not cover); (3) the input element is cut to complement it (its faces nearest
+//! kept output faces are SINK, nearest deleted ones or uncovered ones outside the overlap SOURCE,
+//! Eq. 7 weights measured to the output's cut loops); (4) stitch_parts welds the two parts.
+//! "More complete" = more faces outside the overlap (ties: more faces, then the output).
+//! \pre both elements are welded triangle meshes, consistently oriented.
+//! \throw SolverError when a deformation solve fails.
 MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element,
                            const std::function<bool(const Vec3&)>& in_overlap,
                            const MergeOptions& options = {});

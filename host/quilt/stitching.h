@@ -1,0 +1,98 @@
+#pragma once
+//! Stitching two cut elements into one (Section 2.7 of the mesh quilting paper, after Yu et al.
+//! 2004's mesh merging): cut-boundary loops, loop pairing, dynamic-programming alignment of each
+//! loop pair, Eq. 5 deformation toward the averaged seam, and welding along the seam.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/tri_mesh.h"
+
+namespace meshquilt {
+
+//! Face adjacency across edges: #F x 3, entry k is the face across edge (v[k], v[k+1]); -1 for a
+//! boundary edge, -2 for an edge shared by more than two faces (non-manifold).
+std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh);
+
+//! Mean edge length over all face edges (0 for a mesh without faces).
+double mean_edge_length(const TriMesh& mesh);
+
+//! A closed loop of cut-boundary edges of a kept face set.
+//! vertices  #K vertex indices in order; edge k is vertices[k] -> vertices[(k+1) % K]
+//! faces     #K the kept face holding edge k (as a half-edge in its own winding order), so the
+//!           kept part lies to the left of the loop seen from outside
+struct CutLoop {
+  std::vector<int32_t> vertices;
+  std::vector<int32_t> faces;
+};
+
+//! Cut loops of the kept faces: closed chains of half-edges of kept faces whose neighbour exists
+//! but is not kept. Loops made only of the mesh's own boundary edges are not cut loops and are
+//! skipped. Returns false (with `why`) when the cut boundary is not a set of simple closed loops:
+//! a vertex with two outgoing cut edges (pinch), or a chain mixing cut and original boundary
+//! edges. `neighbors` is face_neighbors(mesh); `keep` is #F.
+bool cut_loops(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>& neighbors,
+               const std::vector<uint8_t>& keep, std::vector<CutLoop>& loops, std::string* why = nullptr);
+
+//! Makes a kept face set stitchable by removing kept faces (never adding): faces with two or three
+//! cut edges (ears, islands) and all kept faces around a vertex where the kept region is pinched
+//! (two outgoing cut edges), repeated until stable. Returns the number of faces removed.
+int32_t tidy_cut(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>& neighbors,
+                 std::vector<uint8_t>& keep);
+
+struct StitchOptions {
+  double mu = 1.0;               //!< Eq. 5 weight of the seam constraints (the paper's mu)
+  double anchor_factor = 8.0;    //!< vertices farther than this many mean edge lengths from every
+                                 //!< seam vertex are held in place by Eq. 5 constraints too, so
+                                 //!< stitching only bends the parts near the seam; 0 disables
+  double min_split = 0.15;       //!< a seam point may split a boundary edge only between this
+                                 //!< fraction and 1 - it of the edge (else it is welded to an end)
+  int32_t start_candidates = 4;  //!< starting correspondences tried per loop pair (nearest first)
+  bool check_intersections = true;  //!< reject seams whose faces cross other faces (cheap check)
+};
+
+struct StitchResult {
+  bool ok = false;
+  std::string failure;      //!< why stitching was refused (empty when ok)
+  TriMesh mesh;             //!< the stitched element (when ok)
+  int32_t loop_pairs = 0;   //!< seam loops welded
+};
+
+//! Stitches the kept faces of `a` and of `b` into one mesh. Cut loops of the two parts are paired
+//! one-to-one by mean distance; each pair is aligned by dynamic programming over the two closed
+//! polylines (every seam point is a vertex pair welded together or a vertex splitting the other
+//! loop's edge; the total distance between matched points is minimized over a few starting
+//! correspondences); both parts are deformed by Eq. 5 (uniform Laplacian) with their loop
+//! vertices pulled to the averaged seam; the seam is then welded exactly, splitting the boundary
+//! faces where a point falls inside an edge. No new triangles span a gap, so the seam has no
+//! T-junctions and no slivers. The result must be one connected component, every seam face
+//! non-degenerate and oriented like the face it came from, and, when both inputs are closed
+//! oriented 2-manifolds, a closed oriented 2-manifold without pinched vertices; otherwise the
+//! result is refused (ok = false). Parts lie to the left of their loops (consistent outward
+//! orientation of both inputs).
+//! \pre keep_a is #F of a, keep_b is #F of b; vertices welded (shared by index).
+//! \throw SolverError when the deformation solve fails.
+StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, const TriMesh& b,
+                          const std::vector<uint8_t>& keep_b, const StitchOptions& options = {});
+
+//! Topology of a triangle mesh, for checking stitched results.
+struct SurfaceReport {
+  int64_t boundary_edges = 0;        //!< undirected edges used by one face
+  int64_t nonmanifold_edges = 0;     //!< undirected edges used by three or more faces
+  int64_t misoriented_edges = 0;     //!< two-face edges traversed in the same direction by both
+  int64_t pinched_vertices = 0;      //!< vertices whose faces form more than one fan
+  int64_t degenerate_faces = 0;      //!< faces repeating a vertex index
+  int64_t components = 0;            //!< vertex-connected components of the faces
+  int64_t euler = 0;                 //!< V - E + F over vertices used by faces
+  bool closed_manifold() const {
+    return boundary_edges == 0 && nonmanifold_edges == 0 && misoriented_edges == 0 &&
+           pinched_vertices == 0 && degenerate_faces == 0;
+  }
+};
+
+//! Counts the topological defects of `mesh` (see SurfaceReport).
+SurfaceReport inspect_surface(const TriMesh& mesh);
+
+}  // namespace meshquilt

@@ -1,0 +1,117 @@
+// merge_elements on the paper's cases: tubes crossing an overlap band (weave yarn), coincident
+// rings (chain mail), wholly-inside elements, and pairs that cannot be stitched.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "merging_fixtures.h"
+#include "quilt/element_merging.h"
+
+namespace meshquilt {
+namespace {
+
+void expect_closed_single_component(const TriMesh& m, long euler) {
+  const test::Topology t = test::topology(m);
+  EXPECT_TRUE(t.no_repeated_index);
+  EXPECT_TRUE(t.every_edge_twice_opposite);
+  EXPECT_TRUE(t.vertex_links_are_cycles);
+  EXPECT_EQ(t.euler, euler);
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.unused_vertices, 0);
+  EXPECT_GT(test::signed_volume(m), 0.0);
+  EXPECT_EQ(test::crossing_pairs(m), 0);
+}
+
+double distance_to_vertices(const Vec3& p, const TriMesh& m) {
+  double d = 1e300;
+  for (const Vec3& q : m.positions) d = std::min(d, glm::length(p - q));
+  return d;
+}
+
+TEST(ElementMerging, TubesAcrossABandStitchIntoOneClosedTube) {
+  // Output yarn from the left, input yarn to the right, both present in the band |x| < 0.6.
+  const TriMesh out = test::capped_tube(-1.5, 0.5, 0.25, 21, 16);
+  TriMesh in = test::capped_tube(-0.5, 1.5, 0.25, 23, 13, 0.2, Vec3(0.0, 0.02, -0.01));
+  test::rotate_z(in, 0.01);
+  const auto band = [](const Vec3& p) { return std::abs(p.x) < 0.6; };
+  const auto t0 = std::chrono::steady_clock::now();
+  const MergeResult r = merge_elements(out, in, band);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("tube merge: %.2f ms, %zu faces\n", ms, r.element.num_faces());
+  ASSERT_EQ(r.outcome, MergeOutcome::stitched) << r.fallback;
+  EXPECT_EQ(r.seam_loops, 1);
+  expect_closed_single_component(r.element, 2);
+  // Spans the union of both extents.
+  double lo = 1e9, hi = -1e9;
+  for (const Vec3& p : r.element.positions) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+  EXPECT_NEAR(lo, -1.5, 0.02);
+  EXPECT_NEAR(hi, in.positions.back().x, 0.02);
+  // Stays on the inputs: every vertex near one of them; far parts barely move.
+  for (const Vec3& p : r.element.positions)
+    EXPECT_LT(std::min(distance_to_vertices(p, out), distance_to_vertices(p, in)), 0.15);
+  for (const Vec3& p : out.positions)
+    if (p.x < -1.0) {
+      EXPECT_LT(distance_to_vertices(p, r.element), 1e-3);
+    }
+}
+
+TEST(ElementMerging, CoincidentRingsStitchIntoOneClosedTorus) {
+  // Chain-mail case: the same ring, tessellated differently, half of it over the overlap.
+  const TriMesh out = test::torus(1.0, 0.25, 48, 12);
+  const TriMesh in = test::torus(1.0, 0.25, 40, 10, 0.05, 0.2);
+  const auto half = [](const Vec3& p) { return p.x > 0.0; };
+  const MergeResult r = merge_elements(out, in, half);
+  ASSERT_EQ(r.outcome, MergeOutcome::stitched) << r.fallback;
+  EXPECT_EQ(r.seam_loops, 2);
+  expect_closed_single_component(r.element, 0);
+  // The output half (x < 0) comes from the output, the overlap half from the input.
+  int from_out = 0, from_in = 0;
+  for (const Vec3& p : r.element.positions) {
+    if (distance_to_vertices(p, out) < 1e-9) ++from_out;
+    if (distance_to_vertices(p, in) < 1e-9) ++from_in;
+  }
+  EXPECT_GT(from_out, 100);
+  EXPECT_GT(from_in, 100);
+}
+
+TEST(ElementMerging, WhollyInsideElementsYield) {
+  const TriMesh out = test::capped_tube(-1.5, 0.5, 0.25, 21, 16);
+  const TriMesh in = test::capped_tube(-0.5, 1.5, 0.25, 23, 13, 0.2);
+  const MergeResult all = merge_elements(out, in, [](const Vec3&) { return true; });
+  EXPECT_EQ(all.outcome, MergeOutcome::kept_in);
+  EXPECT_EQ(all.element.triangles, in.triangles);
+  // Overlap covering the input (x > -0.7) but not the whole output.
+  const MergeResult covered = merge_elements(out, in, [](const Vec3& p) { return p.x > -0.7; });
+  EXPECT_EQ(covered.outcome, MergeOutcome::kept_out);
+  EXPECT_EQ(covered.element.triangles, out.triangles);
+  EXPECT_EQ(covered.element.positions, out.positions);
+  // Overlap covering the output (x < 0.7) but not the whole input.
+  const MergeResult replaced = merge_elements(out, in, [](const Vec3& p) { return p.x < 0.7; });
+  EXPECT_EQ(replaced.outcome, MergeOutcome::kept_in);
+  EXPECT_EQ(replaced.element.positions, in.positions);
+}
+
+TEST(ElementMerging, UnstitchablePairKeepsTheMoreCompleteElementWhole) {
+  // The input is two parallel yarns; only one continues the output's yarn. A stitch would leave
+  // two components, so the element with more faces outside the overlap survives unchanged.
+  const TriMesh out = test::capped_tube(-1.5, 0.5, 0.25, 21, 16);
+  const TriMesh in = test::concat(test::capped_tube(-0.5, 1.5, 0.25, 23, 13, 0.2),
+                                  test::capped_tube(-0.5, 1.5, 0.25, 23, 13, 0.2, Vec3(0.0, 0.9, 0.0)));
+  const auto band = [](const Vec3& p) { return std::abs(p.x) < 0.6; };
+  const MergeResult r = merge_elements(out, in, band);
+  EXPECT_FALSE(r.fallback.empty());
+  ASSERT_EQ(r.outcome, MergeOutcome::kept_in) << r.fallback;  // two yarns outside vs one
+  EXPECT_EQ(r.element.positions, in.positions);
+  EXPECT_EQ(r.element.triangles, in.triangles);
+
+  // A longer output now has more faces outside the overlap: it is kept whole instead.
+  const TriMesh long_out = test::capped_tube(-4.5, 0.5, 0.25, 51, 16);
+  const MergeResult r2 = merge_elements(long_out, in, band);
+  ASSERT_EQ(r2.outcome, MergeOutcome::kept_out) << r2.fallback;
+  EXPECT_EQ(r2.element.positions, long_out.positions);
+  EXPECT_EQ(r2.element.triangles, long_out.triangles);
+}
+
+}  // namespace
+}  // namespace meshquilt
