@@ -71,7 +71,7 @@ std::vector<Vec3> shape_fruit(const std::vector<Vec3>& sphere, double scale, Swa
   const double lobes = random.uniform(0.0, 0.04);
   const double lobe_phase = random.uniform(0.0, 2.0 * std::numbers::pi);
   const double taper = random.uniform(0.02, 0.08);
-  const double stem_depth = random.uniform(0.2, 0.3);
+  const double stem_depth = random.uniform(0.3, 0.4);
   const double calyx_depth = random.uniform(0.1, 0.2);
   const double flatten = random.uniform(0.8, 0.95);
   const double c5 = std::cos(lobe_phase), s5 = std::sin(lobe_phase);
@@ -85,7 +85,7 @@ std::vector<Vec3> shape_fruit(const std::vector<Vec3>& sphere, double scale, Swa
     const double fifth = x * (x2 * x2 - 10.0 * x2 * y2 + 5.0 * y2 * y2);
     const double along = glm::dot(d, stretch);
     const double rho = 1.0 + lopsided * glm::dot(d, lean) + elongation * (along * along - 1.0 / 3.0) +
-                       lobes * fifth + taper * d.z - stem_depth * std::exp(-(1.0 - d.z) / 0.06) -
+                       lobes * fifth + taper * d.z - stem_depth * std::exp(-(1.0 - d.z) / 0.08) -
                        calyx_depth * std::exp(-(1.0 + d.z) / 0.05);
     points.push_back(scale * rho * Vec3(d.x, d.y, flatten * d.z));
   }

@@ -84,11 +84,12 @@ void validate(const WeaveOptions& o, int warps, int wefts) {
       << 1.0 / curvature << ": the yarn would fold; lower --amplitude or --yarn-radius";
     invalid(m.str());
   }
-  // Chords of the bent centreline cut the inside of a bend; the facets there stand out of the
-  // round tube by at most the sagitta of a chord on the bend's inner radius.
+  // On the inside of a bend the tube's surface is concave along the yarn, so the facets there
+  // stand out of the round tube: by the sagitta of a chord of the inner arc, whose radius is
+  // 1/curvature - radius and whose chords are (1 - radius curvature) times the centreline's.
   const double max_slope = o.amplitude * kPi / o.pitch;
   const double chord = o.pitch / o.segments_per_pitch * std::sqrt(1.0 + max_slope * max_slope);
-  const double bulge = chord * chord * curvature / (8.0 * (1.0 - o.yarn_radius * curvature));
+  const double bulge = chord * chord * curvature * (1.0 - o.yarn_radius * curvature) / 8.0;
   const double needed = 2.0 * (o.yarn_radius + bulge);
   if (o.pitch <= needed) {
     std::ostringstream m;
