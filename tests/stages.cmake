@@ -8,3 +8,6 @@ meshquilt_test(seed_finding_test
 meshquilt_test(element_deformation_test
   SOURCES element_deformation_test.cpp ${stage_dir}/element_deformation.cpp
   LIBS meshquilt_mesh meshquilt_engine Eigen3::Eigen)
+meshquilt_test(correspondence_test
+  SOURCES correspondence_test.cpp ${stage_dir}/correspondence.cpp
+  LIBS meshquilt_spatial meshquilt_mesh meshquilt_engine)

@@ -11,7 +11,7 @@
 namespace meshquilt {
 
 struct CorrespondenceOptions {
-  double lambda = 1.0;               //!< weight of distance in Eq. 1
+  double lambda = 1.0;               //!< weight of distance in Eq. 1 (>= 0; the paper uses 1)
   double max_distance_factor = 3.0;  //!< prune pairs farther than this x the input's local mean edge length
 };
 
@@ -30,22 +30,40 @@ struct VertexFacePair {
 struct ElementRelation {
   int32_t out_element = -1;
   int32_t in_element = -1;
-  std::vector<int32_t> pairs;  //!< indices into Correspondences::pairs
+  std::vector<int32_t> pairs;  //!< indices into Correspondences::pairs, ascending
 };
 
 struct Correspondences {
-  std::vector<VertexFacePair> pairs;       //!< the pairs that survived all three prunings
-  std::vector<ElementRelation> relations;  //!< sorted by decreasing pairs.size(), then indices
+  std::vector<VertexFacePair> pairs;       //!< survivors of all three prunings, by (out_element, out_vertex)
+  std::vector<ElementRelation> relations;  //!< by decreasing pairs.size(), then (out_element, in_element)
 };
 
 //! Finds pairs for every vertex of `out_elements` for which in_overlap(vertex) holds, against all
-//! faces of all `in_elements` (nearest by Eq. 1, with per-vertex normals of the output and face
-//! normals of the input), prunes (a) opposite normals (dot < 0), (b) distance larger than
-//! max_distance_factor x the mean edge length of the input face's 1-ring, (c) relations whose
-//! elements' x-y projections do not overlap (exact 2D triangle overlap), with their pairs.
+//! faces of all `in_elements` (nearest by Eq. 1, D = (1 + lambda Dist)(1 + |n_v - n_f|), with
+//! area-weighted unit vertex normals of the output and unit face normals of the input; exact
+//! minimum through an Embree radius-shrinking query), then prunes
+//!  (a) opposite normals: n_v . n_f < 0;
+//!  (b) distance > max_distance_factor x the local mean edge length of the input face: the mean
+//!      length of the distinct input edges with an endpoint at one of the face's three vertices;
+//!  (c) relations whose elements' x-y projections do not overlap (exact 2D test between their
+//!      closed projected triangles; touching counts as overlap), with all their pairs.
+//! Vertices that no triangle uses get no pair. in_overlap is called once per output vertex, from
+//! the calling thread; the face queries then run in parallel (TBB) with a deterministic result.
+//! out_elements  #E_out meshes; in_elements  #E_in meshes (`elements` ids are ignored in both)
+//! \throw InputError (invalid_option) for lambda < 0 or max_distance_factor <= 0 (or non-finite);
+//!        InputError for a triangle index out of range.
 Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
                                      const std::vector<TriMesh>& in_elements,
                                      const std::function<bool(const Vec3&)>& in_overlap,
                                      const CorrespondenceOptions& options = {});
+
+//! Whether the x-y projections of closed triangles (a0, a1, a2) and (b0, b1, b2) share a point.
+//! Exact (orientation predicates); a collinear projection counts as the union of its edges.
+bool projected_triangles_overlap(const Vec3& a0, const Vec3& a1, const Vec3& a2,
+                                 const Vec3& b0, const Vec3& b1, const Vec3& b2);
+
+//! Whether the x-y projections of two meshes' triangles overlap (any pair of triangles does).
+//! Grid-accelerated over the common bounding box; exact per triangle pair.
+bool projections_overlap(const TriMesh& a, const TriMesh& b);
 
 }  // namespace meshquilt
