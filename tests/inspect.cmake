@@ -1,0 +1,1 @@
+meshquilt_test(inspect_topology_test SOURCES inspect_topology_test.cpp LIBS meshquilt_inspect meshquilt_spatial meshquilt_mesh)
