@@ -457,9 +457,8 @@ const Expected kSharedMeshes[] = {
 
 fs::path shared_meshes() { return fs::path(MESHQUILT_SHARED_DIR) / "data" / "meshes"; }
 
-// Compares positions (OpenMesh stores floats) and, when OpenMesh kept every face, the faces up
-// to a rotation of their corners.
-void expect_matches_reference(const TriMesh& ours, const fs::path& file, bool require_all_faces) {
+// Compares positions (OpenMesh stores floats) and faces up to a rotation of their corners.
+void expect_matches_reference(const TriMesh& ours, const fs::path& file) {
   ReferenceMesh reference;
   OpenMesh::IO::Options options;
   ASSERT_TRUE(OpenMesh::IO::read_mesh(reference, file.string(), options)) << file;
@@ -472,11 +471,7 @@ void expect_matches_reference(const TriMesh& ours, const fs::path& file, bool re
       ASSERT_NEAR(ours.positions[v][k], q[k], 1e-6 * scale) << file << " vertex " << v;
     }
   }
-  if (reference.n_faces() != ours.triangles.size()) {
-    // OpenMesh drops faces at non-manifold (pinched) vertices; then only vertices are compared.
-    EXPECT_FALSE(require_all_faces) << file << ": OpenMesh read " << reference.n_faces() << " faces";
-    return;
-  }
+  ASSERT_EQ(reference.n_faces(), ours.triangles.size()) << file;
   for (size_t f = 0; f < ours.triangles.size(); ++f) {
     std::vector<int> corners;
     for (auto v : reference.fv_range(ReferenceMesh::FaceHandle(static_cast<int>(f)))) corners.push_back(v.idx());
@@ -498,9 +493,7 @@ TEST(MeshIoShared, ReadsEveryDataMeshLikeOpenMesh) {
     const TriMesh ours = read_mesh(file);
     EXPECT_EQ(ours.positions.size(), e.vertices) << e.file;
     EXPECT_EQ(ours.triangles.size(), e.faces) << e.file;
-    const bool is_coff = std::string(e.file) == "plane.off";
-    const bool pinched = std::string(e.file) == "teapot.obj";
-    if (!is_coff) expect_matches_reference(ours, file, !pinched);
+    expect_matches_reference(ours, file);
   }
 }
 
@@ -528,7 +521,7 @@ TEST_F(MeshIoTest, OpenMeshReadsWhatWeWrite) {
   const TriMesh mesh = read_mesh(source);
   for (const std::string name : {"b.ply", "a.ply", "m.obj", "m.off"}) {
     write_mesh(mesh, path(name), WriteOptions{name != "a.ply"});
-    expect_matches_reference(mesh, path(name), true);
+    expect_matches_reference(mesh, path(name));
   }
   for (const std::string name : {"b.stl", "a.stl"}) {
     write_mesh(mesh, path(name), WriteOptions{name == "b.stl"});

@@ -856,9 +856,8 @@ std::string format_stl(const TriMesh& mesh, bool binary) {
 
 }  // namespace
 
-// Our own parsers rather than OpenMesh's readers: OpenMesh mis-reads CGAL's COFF files, drops
-// the PLY face property `element` and OBJ groups we need for element ids, and is several times
-// slower on million-face inputs. OpenMesh stays the independent reference in the tests.
+// Our own parsers rather than OpenMesh's: see mesh_io.h (element ids, non-manifold faces, speed).
+// OpenMesh stays the independent reference in the tests.
 TriMesh read_mesh(const std::filesystem::path& file) {
   const std::string name = file.string();
   const std::string ext = lower_extension(file);
