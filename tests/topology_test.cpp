@@ -5,10 +5,12 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
 
+#include "error.h"
 #include "mesh/topology.h"
 
 namespace meshquilt {
@@ -86,6 +88,12 @@ TEST(Topology, ToleranceIsRelativeToTheDiagonalAndExact) {
   d.positions.push_back({30, 0, 0});
   d.triangles.push_back({7, 0, 1});
   EXPECT_EQ(weld_vertices(d, 0.0).positions.size(), 7u);
+}
+
+TEST(Topology, WeldRejectsNonFinitePositions) {
+  TriMesh m = tetrahedron({0, 0, 0});
+  m.positions[2].y = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(weld_vertices(m), InputError);
 }
 
 TEST(Topology, WeldDropsDegenerateFacesAndUnusedVerticesKeepingElements) {

@@ -159,7 +159,6 @@ TriMesh read_obj(std::string_view text, const std::string& name) {
   bool all_faces_grouped = true;
   int32_t group = -1;
   std::vector<int32_t> polygon;
-  std::vector<int64_t> raw;
   TextCursor cursor{text.data(), text.data() + text.size()};
   while (!cursor.at_end()) {
     const char* line_start = cursor.p;

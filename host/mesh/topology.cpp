@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "error.h"
+
 namespace meshquilt {
 namespace {
 
@@ -108,6 +110,7 @@ TriMesh compact(const TriMesh& mesh, const std::vector<Tri>& triangles, const st
 TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
   const Bounds b = bounds_of(mesh.positions);
   const double diagonal = glm::length(b.max - b.min);
+  if (!std::isfinite(diagonal)) throw InputError("weld_vertices: mesh has NaN or infinite vertex positions");
   const double tolerance = std::max(0.0, relative_tolerance) * diagonal;
   const double tolerance2 = tolerance * tolerance;
   // Cells at least twice the tolerance, so the neighbours of a point lie in the 2x2x2 block of

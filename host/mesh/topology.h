@@ -18,6 +18,7 @@ inline constexpr double kWeldTolerance = 1e-6;
 //! transitive: a chain of points each closer than the tolerance may keep several); surviving
 //! vertices keep their input order, so the result is deterministic.
 //! \pre indices in range (validate_mesh). A tolerance of 0 merges exactly equal positions only.
+//! \throw InputError(invalid_mesh) when a position is NaN or infinite.
 TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance = kWeldTolerance);
 
 //! Vertex-connected components of the faces: #F component id in [0, count), numbered in order of
