@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <set>
@@ -13,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "mesh/mesh_io.h"
 
 namespace meshquilt {
 namespace {
@@ -464,6 +466,26 @@ TEST(ProjectedOverlap, MeshesMatchAllPairs) {
   }
   EXPECT_GT(positive, 40);
   EXPECT_LT(positive, 160);
+}
+
+TEST(Correspondence, RealMeshMatchesBruteForce) {
+  const std::filesystem::path file = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/knot.off";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  const TriMesh knot = read_mesh(file);
+  Vec3 lo(1e300), hi(-1e300);
+  for (const Vec3& p : knot.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const double diag = glm::length(hi - lo);
+  // The output: the knot moved a little, so most vertices pair with a face near their own, and
+  // an overlap band across the knot keeps the brute force small.
+  TriMesh moved = knot;
+  for (Vec3& p : moved.positions) p += diag * Vec3(0.004, -0.003, 0.002);
+  const double x0 = lo.x + 0.45 * (hi.x - lo.x), x1 = lo.x + 0.52 * (hi.x - lo.x);
+  const auto band = [&](const Vec3& p) { return p.x > x0 && p.x < x1; };
+  const std::vector<TriMesh> ins = {knot}, outs = {moved};
+  const CorrespondenceOptions o{20.0 / diag, 3.0};  // distance weighed at the scale of the mesh
+  const Correspondences c = find_correspondences(outs, ins, band, o);
+  EXPECT_GT(c.pairs.size(), 100u);
+  expect_matches_reference(c, outs, ins, band, o);
 }
 
 TEST(Correspondence, RejectsBadOptions) {
