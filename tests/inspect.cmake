@@ -1,1 +1,2 @@
 meshquilt_test(inspect_topology_test SOURCES inspect_topology_test.cpp LIBS meshquilt_inspect meshquilt_spatial meshquilt_mesh)
+meshquilt_test(inspect_coverage_test SOURCES inspect_coverage_test.cpp LIBS meshquilt_inspect meshquilt_spatial meshquilt_mesh)

@@ -229,7 +229,7 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
   return finish(1.0 - v - w, v, w);
 }
 
-FaceBvh::FaceBvh(const TriMesh& mesh) : mesh_(mesh), impl_(std::make_unique<Impl>()) {
+FaceBvh::FaceBvh(const TriMesh& mesh, BvhQuality quality) : mesh_(mesh), impl_(std::make_unique<Impl>()) {
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) {
     throw DeviceError("Embree: cannot create a device (" + std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
@@ -244,7 +244,7 @@ FaceBvh::FaceBvh(const TriMesh& mesh) : mesh_(mesh), impl_(std::make_unique<Impl
   // the vertices (and no padding after a vertex buffer) is needed, and every exact test runs on
   // the mesh's own doubles.
   impl_->scene = rtcNewScene(impl_->device);
-  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_MEDIUM);
+  rtcSetSceneBuildQuality(impl_->scene, quality == BvhQuality::low ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
   RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_USER);
   rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(mesh.num_faces()));
   rtcSetGeometryUserData(geometry, const_cast<TriMesh*>(&mesh));

@@ -33,7 +33,7 @@ FaceIntersections find(const TriMesh& mesh, const std::vector<int32_t>& face_ele
   FaceIntersections result;
   if (mesh.num_faces() < 2) return result;
   tbb::enumerable_thread_specific<std::vector<FacePair>> different, same;
-  const FaceBvh bvh(mesh);
+  const FaceBvh bvh(mesh, BvhQuality::low);
   // Embree runs the collision on its own worker threads; each collects into its own list.
   bvh.for_each_overlapping_pair([&](int32_t f, int32_t g) {
     const Tri& a = mesh.triangles[f];
