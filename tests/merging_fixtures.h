@@ -165,13 +165,17 @@ inline bool segment_crosses(const Vec3& p, const Vec3& q, const Vec3& a, const V
     return u.x * (v.y * w.z - v.z * w.y) - u.y * (v.x * w.z - v.z * w.x) + u.z * (v.x * w.y - v.y * w.x);
   };
   const double sp = det(a - p, b - p, c - p), sq = det(a - q, b - q, c - q);
+  // Ends within rounding of the plane (coplanar facets of a tube strip) do not cross it.
+  const double eps = 1e-9 * glm::length(glm::cross(b - a, c - a)) * glm::length(q - p);
+  if (std::abs(sp) <= eps || std::abs(sq) <= eps) return false;
   if (sp * sq >= 0.0) return false;  // both ends on one side of the plane
   const double s1 = det(a - p, b - p, q - p), s2 = det(b - p, c - p, q - p), s3 = det(c - p, a - p, q - p);
   return (s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0);
 }
 
-//! Number of face pairs that share no vertex and cross (brute force with a box test).
-inline int crossing_pairs(const TriMesh& m) {
+//! Number of face pairs that share no vertex and cross (brute force with a box test); the first
+//! such pair goes to `first` when given.
+inline int crossing_pairs(const TriMesh& m, std::pair<int, int>* first = nullptr) {
   int n = 0;
   const size_t F = m.triangles.size();
   std::vector<std::array<Vec3, 2>> box(F);
@@ -197,6 +201,7 @@ inline int crossing_pairs(const TriMesh& m) {
       bool hit = false;
       for (int k = 0; k < 3 && !hit; ++k)
         hit = segment_crosses(A[k], A[(k + 1) % 3], B[0], B[1], B[2]) || segment_crosses(B[k], B[(k + 1) % 3], A[0], A[1], A[2]);
+      if (hit && n == 0 && first) *first = {static_cast<int>(f), static_cast<int>(g)};
       n += hit;
     }
   return n;

@@ -67,6 +67,23 @@ std::vector<uint8_t> grow(const TriMesh& m, const std::vector<std::array<int32_t
   return within;
 }
 
+//! The faces of `region` whose connected part of the region (across edges) has a face outside the
+//! overlap.
+std::vector<uint8_t> reaching_outside(const TriMesh& m, const std::vector<std::array<int32_t, 3>>& nb,
+                                      const std::vector<uint8_t>& region, const std::vector<uint8_t>& inside) {
+  std::vector<uint8_t> reach(m.num_faces(), 0);
+  std::vector<int32_t> stack;
+  for (size_t f = 0; f < m.num_faces(); ++f)
+    if (region[f] && !inside[f] && !reach[f]) reach[f] = 1, stack.push_back(static_cast<int32_t>(f));
+  while (!stack.empty()) {
+    const int32_t f = stack.back();
+    stack.pop_back();
+    for (int32_t g : nb[f])
+      if (g >= 0 && region[g] && !reach[g]) reach[g] = 1, stack.push_back(g);
+  }
+  return reach;
+}
+
 //! The dual graph of a mesh with Eq. 7 weights, `dist(v)` standing for Dist(v, C_other).
 CutGraph dual_graph(const TriMesh& m, const std::vector<std::array<int32_t, 3>>& nb,
                     const std::vector<double>& dist) {
@@ -137,8 +154,21 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   }
   // "A face adjacent to f_in with no corresponding vertex in C_out": with different tessellations
   // many faces receive no closest-vertex at all, so correspondence is read as coverage (distance)
-  // and adjacency as a band of frontier_factor coverage distances around uncovered faces.
-  const std::vector<uint8_t> frontier_in = grow(ci, nb_in, uncovered_in, options.frontier_factor * cover);
+  // and adjacency as a band of frontier_factor coverage distances around uncovered faces. Only
+  // uncovered regions that reach outside the overlap count: those are where the input continues
+  // beyond the output. An uncovered island inside the overlap (the input's end cap sunk inside
+  // the output's tube) is where the input ends, and must not push the output's cut away.
+  const std::vector<uint8_t> frontier_in =
+      grow(ci, nb_in, reaching_outside(ci, nb_in, uncovered_in, inside_in), options.frontier_factor * cover);
+
+  // The mirror image of that rule: where the input ends inside the overlap, the output must stay,
+  // or the input could not be cut to meet it there. Output faces near the output's own exclusive
+  // region (uncovered by the input, reaching outside the overlap) are kept unless a SINK rule
+  // claims them.
+  std::vector<uint8_t> uncovered_out(co.num_faces());
+  for (size_t f = 0; f < co.num_faces(); ++f) uncovered_out[f] = bvh_in.closest_point(centroid(co, f)).distance > cover;
+  const std::vector<uint8_t> keep_zone_out =
+      grow(co, nb_out, reaching_outside(co, nb_out, uncovered_out, inside_out), options.frontier_factor * cover);
 
   CutGraph g_out = dual_graph(co, nb_out, dist_out);
   for (size_t f = 0; f < co.num_faces(); ++f)
@@ -154,6 +184,8 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
     for (int32_t f : around_out[v])
       if (inside_out[f]) g_out.sink_caps[f] = kInfiniteCapacity;
   }
+  for (size_t f = 0; f < co.num_faces(); ++f)
+    if (keep_zone_out[f] && g_out.sink_caps[f] == 0.0) g_out.source_caps[f] = kInfiniteCapacity;
   std::vector<uint8_t> keep_out = minimum_cut(g_out).source_side;
   tidy_cut(co, nb_out, keep_out);
   const size_t kept_out_faces = count_set(keep_out);
@@ -179,16 +211,28 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   for (size_t v = 0; v < ci.num_vertices(); ++v)
     dist_in[v] = seam.empty() ? bvh_out.closest_point(ci.positions[v]).distance : distance_to_segments(ci.positions[v], seam);
   CutGraph g_in = dual_graph(ci, nb_in, dist_in);
-  for (size_t f = 0; f < ci.num_faces(); ++f) {
-    const ClosestPoint& cp = in_face_to_out[f];
-    if (uncovered_in[f]) {
-      // The input alone is here: outside the overlap it must stay; inside, the cut decides
-      // (an end cap sunk inside the output's tube is then dropped with its surroundings).
-      if (!inside_in[f]) g_in.source_caps[f] = kInfiniteCapacity;
-      continue;
+  std::vector<double> to_seam(ci.num_faces(), std::numeric_limits<double>::infinity());
+  if (!seam.empty())
+    for (size_t f = 0; f < ci.num_faces(); ++f) to_seam[f] = distance_to_segments(centroid(ci, f), seam);
+  // When the input reaches only a little past the output's seam, the margin could swallow every
+  // face that must be deleted; then the margin shrinks until some face is SINK-linked.
+  for (double scale : {1.0, 0.5, 0.0}) {
+    std::fill(g_in.source_caps.begin(), g_in.source_caps.end(), 0.0);
+    std::fill(g_in.sink_caps.begin(), g_in.sink_caps.end(), 0.0);
+    bool any_sink = false;
+    for (size_t f = 0; f < ci.num_faces(); ++f) {
+      const ClosestPoint& cp = in_face_to_out[f];
+      if (uncovered_in[f]) {
+        // The input alone is here: outside the overlap it must stay; inside, the cut decides
+        // (an end cap sunk inside the output's tube is then dropped with its surroundings).
+        if (!inside_in[f]) g_in.source_caps[f] = kInfiniteCapacity;
+        continue;
+      }
+      if (to_seam[f] <= scale * margin) continue;
+      (keep_out[cp.face] ? g_in.sink_caps[f] : g_in.source_caps[f]) = kInfiniteCapacity;
+      any_sink = any_sink || keep_out[cp.face];
     }
-    if (!seam.empty() && distance_to_segments(centroid(ci, f), seam) <= margin) continue;
-    (keep_out[cp.face] ? g_in.sink_caps[f] : g_in.source_caps[f]) = kInfiniteCapacity;
+    if (any_sink) break;
   }
   std::vector<uint8_t> keep_in = minimum_cut(g_in).source_side;
   tidy_cut(ci, nb_in, keep_in);

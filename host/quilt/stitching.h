@@ -43,8 +43,10 @@ int32_t tidy_cut(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>&
                  std::vector<uint8_t>& keep);
 
 struct StitchOptions {
-  double mu = 1.0;               //!< Eq. 5 weight of the seam constraints (the paper's mu)
-  double anchor_factor = 8.0;    //!< vertices farther than this many mean edge lengths from every
+  double mu = 100.0;             //!< Eq. 5 weight of the seam and anchor constraints (the paper's
+                                 //!< mu, raised from 1 so both are met nearly exactly and the bend
+                                 //!< is confined between them)
+  double anchor_factor = 4.0;    //!< vertices farther than this many mean edge lengths from every
                                  //!< seam vertex are held in place by Eq. 5 constraints too, so
                                  //!< stitching only bends the parts near the seam; 0 disables
   double min_split = 0.15;       //!< a seam point may split a boundary edge only between this
