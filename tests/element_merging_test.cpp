@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <random>
 
 #include "merging_fixtures.h"
 #include "quilt/element_merging.h"
@@ -125,6 +126,73 @@ TEST(ElementMerging, UnstitchablePairKeepsTheMoreCompleteElementWhole) {
   ASSERT_EQ(r2.outcome, MergeOutcome::kept_out) << r2.fallback;
   EXPECT_EQ(r2.element.positions, long_out.positions);
   EXPECT_EQ(r2.element.triangles, long_out.triangles);
+}
+
+// Random misalignments, tessellations and bands: every outcome must be a clean closed element
+// (stitched) or one input whole (fallback), never a broken one; most must stitch.
+TEST(ElementMerging, RandomTubePairsAlwaysYieldAClosedElement) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int stitched = 0, trials = 24;
+  double worst_ms = 0.0;
+  for (int trial = 0; trial < trials; ++trial) {
+    const double band = 0.45 + 0.3 * u(rng);
+    const double out_end = band * (0.5 + 0.45 * u(rng)), in_start = -band * (0.5 + 0.45 * u(rng));
+    const TriMesh out = test::capped_tube(-1.5, out_end, 0.25, 16 + static_cast<int>(12 * u(rng)), 10 + static_cast<int>(8 * u(rng)), u(rng));
+    TriMesh in = test::capped_tube(in_start, 1.5, 0.25, 16 + static_cast<int>(12 * u(rng)), 10 + static_cast<int>(8 * u(rng)), u(rng),
+                                   Vec3(0.0, 0.04 * (u(rng) - 0.5), 0.04 * (u(rng) - 0.5)));
+    test::rotate_z(in, 0.03 * (u(rng) - 0.5));
+    const auto overlap = [band](const Vec3& p) { return std::abs(p.x) < band; };
+    const auto t0 = std::chrono::steady_clock::now();
+    const MergeResult r = merge_elements(out, in, overlap);
+    worst_ms = std::max(worst_ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    SCOPED_TRACE("trial " + std::to_string(trial) + ": " + r.fallback);
+    if (r.outcome == MergeOutcome::stitched) {
+      ++stitched;
+      const test::Topology t = test::topology(r.element);
+      EXPECT_TRUE(t.every_edge_twice_opposite && t.vertex_links_are_cycles && t.no_repeated_index);
+      EXPECT_EQ(t.euler, 2);
+      EXPECT_EQ(t.components, 1);
+      EXPECT_EQ(test::crossing_pairs(r.element), 0);
+    } else {
+      const TriMesh& whole = r.outcome == MergeOutcome::kept_in ? in : out;
+      EXPECT_EQ(r.element.triangles, whole.triangles);
+      EXPECT_EQ(r.element.positions, whole.positions);
+      std::printf("trial %d fell back: %s\n", trial, r.fallback.c_str());
+    }
+  }
+  std::printf("random tubes: %d of %d stitched, slowest merge %.1f ms\n", stitched, trials, worst_ms);
+  EXPECT_GE(stitched, trials * 9 / 10);
+}
+
+TEST(ElementMerging, RandomRingPairsAlwaysYieldAClosedElement) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int stitched = 0, trials = 16;
+  for (int trial = 0; trial < trials; ++trial) {
+    const TriMesh out = test::torus(1.0, 0.25, 30 + static_cast<int>(24 * u(rng)), 8 + static_cast<int>(8 * u(rng)), u(rng), u(rng));
+    TriMesh in = test::torus(1.0, 0.25, 30 + static_cast<int>(24 * u(rng)), 8 + static_cast<int>(8 * u(rng)), u(rng), u(rng));
+    for (Vec3& p : in.positions) p += Vec3(0.03 * (u(rng) - 0.5), 0.03 * (u(rng) - 0.5), 0.0) * 0.0 + Vec3(0.01, -0.01, 0.005);
+    const double angle = 2.0 * M_PI * u(rng), offset = 0.4 * (u(rng) - 0.5);
+    const Vec3 dir(std::cos(angle), std::sin(angle), 0.0);
+    const auto overlap = [dir, offset](const Vec3& p) { return glm::dot(p, dir) > offset; };
+    const MergeResult r = merge_elements(out, in, overlap);
+    SCOPED_TRACE("trial " + std::to_string(trial) + ": " + r.fallback);
+    if (r.outcome == MergeOutcome::stitched) {
+      ++stitched;
+      const test::Topology t = test::topology(r.element);
+      EXPECT_TRUE(t.every_edge_twice_opposite && t.vertex_links_are_cycles && t.no_repeated_index);
+      EXPECT_EQ(t.euler, 0);
+      EXPECT_EQ(t.components, 1);
+      EXPECT_EQ(test::crossing_pairs(r.element), 0);
+    } else {
+      const TriMesh& whole = r.outcome == MergeOutcome::kept_in ? in : out;
+      EXPECT_EQ(r.element.triangles, whole.triangles);
+      std::printf("ring trial %d fell back: %s\n", trial, r.fallback.c_str());
+    }
+  }
+  std::printf("random rings: %d of %d stitched\n", stitched, trials);
+  EXPECT_GE(stitched, trials * 3 / 4);
 }
 
 }  // namespace

@@ -186,6 +186,17 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   }
   for (size_t f = 0; f < co.num_faces(); ++f)
     if (keep_zone_out[f] && g_out.sink_caps[f] == 0.0) g_out.source_caps[f] = kInfiniteCapacity;
+  // The paper's SINK rule alone can yield only small islands (a few faces at the border of the
+  // overlap where both elements coincide, as with interlinked rings); the cheapest cut then
+  // punches a small hole around them instead of handing the overlap to the input. The input
+  // replaces the output in the overlap (as when the output lies wholly inside it), so covered
+  // output faces deep inside the overlap (depth_factor coverage distances from the output's faces
+  // outside it, along the surface) are SINK-linked too, below the keep rule above.
+  std::vector<uint8_t> out_faces_outside(co.num_faces());
+  for (size_t f = 0; f < co.num_faces(); ++f) out_faces_outside[f] = !inside_out[f];
+  const std::vector<uint8_t> shallow_out = grow(co, nb_out, out_faces_outside, options.depth_factor * cover);
+  for (size_t f = 0; f < co.num_faces(); ++f)
+    if (!shallow_out[f] && !keep_zone_out[f] && !uncovered_out[f]) g_out.sink_caps[f] = kInfiniteCapacity;
   std::vector<uint8_t> keep_out = minimum_cut(g_out).source_side;
   tidy_cut(co, nb_out, keep_out);
   const size_t kept_out_faces = count_set(keep_out);

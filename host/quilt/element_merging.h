@@ -19,6 +19,9 @@ struct MergeOptions {
   double frontier_factor = 2.0;  //!< x coverage distance: faces this close to an uncovered face of
                                  //!< the other element count as "adjacent to a face with no
                                  //!< corresponding vertices" (paper's SINK rule)
+  double depth_factor = 4.0;     //!< x coverage distance: covered output faces farther than this
+                                 //!< inside the overlap (along the surface) are deleted: the
+                                 //!< input replaces the output there
   double seam_margin_factor = 1.5;  //!< input faces this close to the output's cut loops carry no
                                     //!< terminal link, so the input's cut may follow them freely
   StitchOptions stitch;             //!< seam alignment, Eq. 5 deformation, checks
