@@ -14,6 +14,7 @@ layout(std430, set = 0, binding = MATCHING_COST_BINDING_CELL_FACES) readonly buf
 layout(std430, set = 0, binding = MATCHING_COST_BINDING_POINTS) readonly buffer Points { MatchingPoint points[]; };
 layout(std430, set = 0, binding = MATCHING_COST_BINDING_TRANSLATIONS) readonly buffer Translations { vec2 translations[]; };
 layout(std430, set = 0, binding = MATCHING_COST_BINDING_COSTS) writeonly buffer Costs { float costs[]; };
+layout(std430, set = 0, binding = MATCHING_COST_BINDING_CELL_BOUNDS) readonly buffer Cells { MatchingCell cells[]; };
 layout(push_constant, std430) uniform Push { MatchingCostParams params; };
 
 const float kHuge = 3.0e38;
@@ -66,6 +67,22 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c) {
   }
   vec3 d = p - closest;
   return dot(d, d);
+}
+
+// A lower bound of D over the faces of one cell: distance to their box, and the angle between n
+// and the normal cone (|n - n_f| = 2 sin(angle / 2) >= 2 sin((phi - theta) / 2)).
+float cell_bound(MatchingCell cell, vec3 q, vec3 n) {
+  vec3 outside = max(max(cell.box_low.xyz - q, q - cell.box_high.xyz), vec3(0.0));
+  float cos_theta = cell.box_low.w;
+  float sin_theta = cell.box_high.w;
+  float cos_phi = clamp(dot(n, cell.cone_axis.xyz), -1.0, 1.0);
+  float normal_gap = 0.0;
+  if (cos_phi < cos_theta) {
+    float sin_phi = sqrt(max(1.0 - cos_phi * cos_phi, 0.0));
+    float cos_psi = cos_phi * cos_theta + sin_phi * sin_theta;
+    normal_gap = sqrt(max(2.0 - 2.0 * cos_psi, 0.0));
+  }
+  return (1.0 + params.lambda * length(outside)) * (1.0 + normal_gap);
 }
 
 // The ring search of one query: q = p - (t, 0) with the point's unit normal n.
@@ -140,8 +157,12 @@ bool step(inout Search s) {
   int ny = params.grid_ny;
   if (s.i >= 0 && s.i < nx) {
     uint cell = uint(s.j * nx + s.i);
-    s.k = cell_start[cell];
-    s.k_end = cell_start[cell + 1u];
+    uint k_first = cell_start[cell];
+    uint k_end = cell_start[cell + 1u];
+    if (k_first < k_end && cell_bound(cells[cell], s.q, s.n) < s.best) {
+      s.k = k_first;
+      s.k_end = k_end;
+    }
   }
   // Ring r, row by row: whole rows at j = cy -+ r, only the two side cells in between.
   bool full_row = (s.j == s.cy - s.r) || (s.j == s.cy + s.r);

@@ -131,6 +131,37 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
         members[fill[static_cast<std::size_t>(j) * grid_nx_ + i]++] = static_cast<std::uint32_t>(f);
   }
 
+  // Per-cell bounds: the faces' 3D box and a cone around their normals.
+  std::vector<MatchingCell> cell_bounds(cell_count);
+  for (std::size_t cell = 0; cell < cell_count; ++cell) {
+    glm::vec3 box_low(INFINITY), box_high(-INFINITY);
+    glm::dvec3 normal_sum(0.0);
+    bool unbounded = false;
+    for (std::uint32_t k = start[cell]; k < start[cell + 1]; ++k) {
+      const MatchingFace& face = faces[members[k]];
+      for (const glm::vec4* corner : {&face.a, &face.b, &face.c}) {
+        box_low = glm::min(box_low, glm::vec3(*corner));
+        box_high = glm::max(box_high, glm::vec3(*corner));
+      }
+      const glm::dvec3 normal(face.normal);
+      unbounded = unbounded || glm::dot(normal, normal) < 0.5;  // a zero normal fits no cone
+      normal_sum += normal;
+    }
+    double half_angle = M_PI;
+    glm::dvec3 axis(0.0, 0.0, 1.0);
+    if (!unbounded && glm::length(normal_sum) > 1e-6) {
+      axis = glm::normalize(normal_sum);
+      half_angle = 0.0;
+      for (std::uint32_t k = start[cell]; k < start[cell + 1]; ++k)
+        half_angle = std::max(half_angle, std::acos(std::clamp(glm::dot(axis, glm::dvec3(faces[members[k]].normal)), -1.0, 1.0)));
+      // Padding covers float rounding of the normals and of the bound on the device.
+      half_angle = std::min(half_angle + 1e-3, M_PI);
+    }
+    cell_bounds[cell] = {glm::vec4(box_low, static_cast<float>(std::cos(half_angle))),
+                         glm::vec4(box_high, static_cast<float>(half_angle >= M_PI ? 0.0 : std::sin(half_angle))),
+                         glm::vec4(glm::vec3(axis), 0.0f)};
+  }
+
   auto upload = [&](std::unique_ptr<engine::Buffer>& buffer, const void* data, std::size_t bytes) {
     buffer = device_.create_buffer(bytes);
     if (bytes > 0) std::memcpy(buffer->data(), data, bytes);
@@ -138,10 +169,12 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
   upload(faces_, faces.data(), faces.size() * sizeof(MatchingFace));
   upload(cell_start_, start.data(), start.size() * sizeof(std::uint32_t));
   upload(cell_faces_, members.data(), members.size() * sizeof(std::uint32_t));
+  upload(cells_, cell_bounds.data(), cell_bounds.size() * sizeof(MatchingCell));
   // Host copies for pairs the device leaves unfinished (device memory may be slow to read).
   host_faces_ = std::move(faces);
   host_cell_start_ = std::move(start);
   host_cell_faces_ = std::move(members);
+  host_cells_ = std::move(cell_bounds);
 }
 
 MatchingCost::~MatchingCost() = default;
@@ -187,6 +220,7 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
   bindings[MATCHING_COST_BINDING_POINTS] = &point_buffer;
   bindings[MATCHING_COST_BINDING_TRANSLATIONS] = &translation_buffer;
   bindings[MATCHING_COST_BINDING_COSTS] = &cost_buffer;
+  bindings[MATCHING_COST_BINDING_CELL_BOUNDS] = cells_.get();
 
   MatchingCostParams params{};
   params.grid_origin = grid_origin_;
@@ -199,11 +233,29 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
   const std::uint32_t loop_limit = device_.max_loop_iterations();
   params.iteration_budget = loop_limit == 0 ? 0u : loop_limit - std::min<std::uint32_t>(loop_limit / 2, 256u);
 
+  // Points go to the device sorted by grid cell: neighbouring invocations then search the same
+  // cells and faces (for grid-unit translations, in the same order), which keeps SIMD lanes and
+  // caches coherent. Results are written back in the caller's order.
+  std::vector<std::uint32_t> order(point_count);
+  {
+    std::vector<std::uint64_t> keys(point_count);
+    for (std::size_t i = 0; i < point_count; ++i) {
+      const glm::vec2 cell = glm::floor((glm::vec2(points[i]) - grid_origin_) / cell_size_);
+      const auto x = static_cast<std::uint32_t>(std::clamp(cell.x + 1e6f, 0.0f, 2e6f));
+      const auto y = static_cast<std::uint32_t>(std::clamp(cell.y + 1e6f, 0.0f, 2e6f));
+      keys[i] = (std::uint64_t{y} << 32 | x);
+      order[i] = static_cast<std::uint32_t>(i);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+  }
+
   for (std::size_t p0 = 0; p0 < point_count; p0 += chunk_points) {
     const std::size_t pn = std::min(chunk_points, point_count - p0);
     auto* gpu_points = static_cast<MatchingPoint*>(point_buffer.data());
-    for (std::size_t i = 0; i < pn; ++i)
-      gpu_points[i] = {glm::vec4(points[p0 + i], 1.0f), glm::vec4(normals[p0 + i], 0.0f)};
+    for (std::size_t i = 0; i < pn; ++i) {
+      const std::uint32_t source = order[p0 + i];
+      gpu_points[i] = {glm::vec4(points[source], 1.0f), glm::vec4(normals[source], 0.0f)};
+    }
     for (std::size_t c0 = 0; c0 < candidate_count; c0 += batch_candidates) {
       const std::size_t cn = std::min(batch_candidates, candidate_count - c0);
       std::memcpy(translation_buffer.data(), translations.data() + c0, cn * sizeof(vec2));
@@ -221,15 +273,18 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
         last_timing_.device_seconds = std::max(last_timing_.device_seconds, 0.0) + timing.device_seconds;
       const auto* costs = static_cast<const float*>(cost_buffer.data());
       for (std::size_t c = 0; c < cn; ++c) {
-        float* row = result.data() + (c0 + c) * point_count + p0;
-        std::memcpy(row, costs + c * pn, pn * sizeof(float));
+        float* row = result.data() + (c0 + c) * point_count;
+        const glm::vec2 t = translations[c0 + c];
         for (std::size_t i = 0; i < pn; ++i) {
-          if (row[i] >= 0.0f) continue;
-          const glm::vec2 t = translations[c0 + c];
-          row[i] = kernels::matching_cost_cpu_point(host_faces_.data(), host_cell_start_.data(),
-                                                    host_cell_faces_.data(), params,
-                                                    points[p0 + i] - glm::vec3(t, 0.0f), normals[p0 + i]);
-          ++last_fallbacks_;
+          const std::uint32_t target = order[p0 + i];
+          float value = costs[c * pn + i];
+          if (value < 0.0f) {
+            value = kernels::matching_cost_cpu_point(host_faces_.data(), host_cell_start_.data(),
+                                                     host_cell_faces_.data(), host_cells_.data(), params,
+                                                     points[target] - glm::vec3(t, 0.0f), normals[target]);
+            ++last_fallbacks_;
+          }
+          row[target] = value;
         }
       }
     }

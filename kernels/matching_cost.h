@@ -101,12 +101,14 @@ class MatchingCost {
   std::unique_ptr<engine::Buffer> faces_;
   std::unique_ptr<engine::Buffer> cell_start_;
   std::unique_ptr<engine::Buffer> cell_faces_;
+  std::unique_ptr<engine::Buffer> cells_;
   std::unique_ptr<engine::Buffer> points_;
   std::unique_ptr<engine::Buffer> translations_;
   std::unique_ptr<engine::Buffer> costs_;
   std::vector<kernels::matching_cost_layout::MatchingFace> host_faces_;
   std::vector<std::uint32_t> host_cell_start_;
   std::vector<std::uint32_t> host_cell_faces_;
+  std::vector<kernels::matching_cost_layout::MatchingCell> host_cells_;
   std::size_t last_dispatches_ = 0;
   std::size_t last_fallbacks_ = 0;
   engine::DispatchTiming last_timing_;

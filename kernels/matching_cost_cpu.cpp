@@ -69,8 +69,24 @@ struct Swatch {
   const MatchingFace* faces;
   const uint* cell_start;
   const uint* cell_faces;
+  const MatchingCell* cells;
   const MatchingCostParams& params;
 };
+
+// Lower bound of D over one cell's faces (see the shader's cell_bound).
+float cell_bound(const MatchingCell& cell, float lambda, vec3 q, vec3 n) {
+  const vec3 outside = glm::max(glm::max(vec3(cell.box_low) - q, q - vec3(cell.box_high)), vec3(0.0f));
+  const float cos_theta = cell.box_low.w;
+  const float sin_theta = cell.box_high.w;
+  const float cos_phi = std::clamp(glm::dot(n, vec3(cell.cone_axis)), -1.0f, 1.0f);
+  float normal_gap = 0.0f;
+  if (cos_phi < cos_theta) {
+    const float sin_phi = std::sqrt(std::max(1.0f - cos_phi * cos_phi, 0.0f));
+    const float cos_psi = cos_phi * cos_theta + sin_phi * sin_theta;
+    normal_gap = std::sqrt(std::max(2.0f - 2.0f * cos_psi, 0.0f));
+  }
+  return (1.0f + lambda * glm::length(outside)) * (1.0f + normal_gap);
+}
 
 // The shader runs this search as one flat loop of steps (see matching_cost.comp, because of
 // llvmpipe's loop limiter); the order in which cells and faces are visited is the same.
@@ -107,6 +123,7 @@ float point_cost(const Swatch& s, vec3 q, vec3 n) {
         if (i < 0 || i >= nx) continue;
         const uint cell = static_cast<uint>(j * nx + i);
         const uint k_end = s.cell_start[cell + 1];
+        if (s.cell_start[cell] == k_end || cell_bound(s.cells[cell], lambda, q, n) >= best) continue;
         for (uint k = s.cell_start[cell]; k < k_end; ++k) {
           const MatchingFace& f = s.faces[s.cell_faces[k]];
           const vec3 a(f.a), b(f.b), c(f.c), fn(f.normal);
@@ -129,9 +146,9 @@ float point_cost(const Swatch& s, vec3 q, vec3 n) {
 }  // namespace
 
 float matching_cost_cpu_point(const MatchingFace* faces, const std::uint32_t* cell_start,
-                              const std::uint32_t* cell_faces, const MatchingCostParams& params, glm::vec3 q,
-                              glm::vec3 n) {
-  return point_cost(Swatch{faces, cell_start, cell_faces, params}, q, n);
+                              const std::uint32_t* cell_faces, const MatchingCell* cells,
+                              const MatchingCostParams& params, glm::vec3 q, glm::vec3 n) {
+  return point_cost(Swatch{faces, cell_start, cell_faces, cells, params}, q, n);
 }
 
 void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
@@ -142,7 +159,8 @@ void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
   auto* costs = static_cast<float*>(dispatch.bindings[MATCHING_COST_BINDING_COSTS]);
   const Swatch swatch{static_cast<const MatchingFace*>(dispatch.bindings[MATCHING_COST_BINDING_FACES]),
                       static_cast<const uint*>(dispatch.bindings[MATCHING_COST_BINDING_CELL_START]),
-                      static_cast<const uint*>(dispatch.bindings[MATCHING_COST_BINDING_CELL_FACES]), params};
+                      static_cast<const uint*>(dispatch.bindings[MATCHING_COST_BINDING_CELL_FACES]),
+                      static_cast<const MatchingCell*>(dispatch.bindings[MATCHING_COST_BINDING_CELL_BOUNDS]), params};
   const uint point_count = params.point_count;
   const uint end = std::min(dispatch.first + dispatch.count, params.invocation_count);
   for (uint id = dispatch.first; id < end; ++id) {

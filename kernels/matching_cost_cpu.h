@@ -18,7 +18,7 @@ void matching_cost_cpu(const engine::CpuDispatch& dispatch);
 //! Eq. 2 for one query q (the point moved by -t) with unit normal n, on the host: the twin's
 //! ring search over the swatch grid described by params (grid fields and lambda).
 float matching_cost_cpu_point(const matching_cost_layout::MatchingFace* faces, const std::uint32_t* cell_start,
-                              const std::uint32_t* cell_faces, const matching_cost_layout::MatchingCostParams& params,
-                              glm::vec3 q, glm::vec3 n);
+                              const std::uint32_t* cell_faces, const matching_cost_layout::MatchingCell* cells,
+                              const matching_cost_layout::MatchingCostParams& params, glm::vec3 q, glm::vec3 n);
 
 }  // namespace meshquilt::kernels

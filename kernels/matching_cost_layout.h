@@ -25,7 +25,8 @@ using vec4 = glm::vec4;
 #define MATCHING_COST_BINDING_POINTS 3       // MatchingPoint[point_count]
 #define MATCHING_COST_BINDING_TRANSLATIONS 4 // vec2[candidate_count]
 #define MATCHING_COST_BINDING_COSTS 5        // float[candidate_count * point_count], candidate-major
-#define MATCHING_COST_BINDING_COUNT 6
+#define MATCHING_COST_BINDING_CELL_BOUNDS 6  // MatchingCell[nx*ny]
+#define MATCHING_COST_BINDING_COUNT 7
 
 // How invocations map to work (MatchingCostParams::mapping).
 #define MATCHING_COST_PER_PAIR 0u  // one invocation per (candidate, point) pair
@@ -37,6 +38,14 @@ struct MatchingFace {
   vec4 b;      // xyz: vertex 1; w: 0
   vec4 c;      // xyz: vertex 2; w: 0
   vec4 normal; // xyz: unit face normal (zero if degenerate); w: 1 if degenerate, else 0
+};
+
+// What bounds D over the faces of one grid cell: their 3D bounding box and a cone holding their
+// normals (half-angle pi when a face has no normal), so a whole cell can be skipped.
+struct MatchingCell {
+  vec4 box_low;   // xyz: minimum corner of the faces' bounding box; w: cos(cone half-angle)
+  vec4 box_high;  // xyz: maximum corner; w: sin(cone half-angle)
+  vec4 cone_axis; // xyz: unit axis of the normal cone; w: 0
 };
 
 // An output vertex: position and unit normal (w unused).
@@ -63,6 +72,7 @@ struct MatchingCostParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(MatchingFace) == 64 && offsetof(MatchingFace, normal) == 48);
+static_assert(sizeof(MatchingCell) == 48 && offsetof(MatchingCell, cone_axis) == 32);
 static_assert(sizeof(MatchingPoint) == 32 && offsetof(MatchingPoint, normal) == 16);
 static_assert(sizeof(vec2) == 8, "std430 vec2 array stride");
 static_assert(sizeof(MatchingCostParams) == 48);

@@ -322,6 +322,24 @@ TEST_P(MatchingCostTest, FlattenedBunnyMatchesBruteForce) {
   check_against_reference(swatch, points_near(swatch, rng, 150, shifts), "bunny");
 }
 
+// With lambda = 0 nothing bounds the search and a fine grid makes it longer than llvmpipe's
+// loop limit: the device must leave those pairs to the host, and the results stay exact.
+TEST_P(MatchingCostTest, SearchesPastTheLoopLimitAreFinishedOnTheHost) {
+  std::mt19937 rng(31);
+  MatchingSwatch swatch = random_swatch(rng, 400);
+  swatch.lambda = 0.0f;
+  swatch.cell_size = 0.025f;
+  const Query query = random_query(rng, 16, 2);
+  MatchingCost cost(*device_, swatch);
+  const std::vector<float> minima = cost.point_costs(query.points, query.normals, query.translations);
+  if (device_->max_loop_iterations() > 0) {
+    EXPECT_GT(cost.last_host_fallback_count(), 0u);
+  } else {
+    EXPECT_EQ(cost.last_host_fallback_count(), 0u);
+  }
+  expect_close(minima, Reference{swatch}.point_costs(query.points, query.normals, query.translations), "loop limit");
+}
+
 TEST_P(MatchingCostTest, EmptyInputs) {
   std::mt19937 rng(3);
   MatchingCost cost(*device_, random_swatch(rng, 20));

@@ -1,0 +1,120 @@
+// matching_cost throughput, in (candidate, point) pairs per second, on each back end and work
+// mapping, at a typical size: a 2,048-face swatch, 2,000 output points, 64 candidates.
+// Run: matching_cost_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <glm/geometric.hpp>
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "device.h"
+#include "error.h"
+#include "matching_cost.h"
+
+namespace meshquilt {
+namespace {
+
+constexpr int kGrid = 32;          // 32 x 32 quads = 2,048 faces
+constexpr float kExtent = 8.0f;    // swatch spans [0,8]^2
+constexpr int kPoints = 2000;
+constexpr int kCandidatesPerSide = 8;  // 64 candidates
+
+float height(float x, float y) { return 0.3f * std::sin(2.0f * x) * std::cos(1.7f * y); }
+
+glm::vec3 height_normal(float x, float y) {
+  const float dx = 0.6f * std::cos(2.0f * x) * std::cos(1.7f * y);
+  const float dy = -0.51f * std::sin(2.0f * x) * std::sin(1.7f * y);
+  return glm::normalize(glm::vec3(-dx, -dy, 1.0f));
+}
+
+MatchingSwatch make_swatch() {
+  MatchingSwatch swatch;
+  const float h = kExtent / kGrid;
+  for (int j = 0; j <= kGrid; ++j)
+    for (int i = 0; i <= kGrid; ++i) swatch.positions.emplace_back(i * h, j * h, height(i * h, j * h));
+  auto index = [](int i, int j) { return static_cast<std::uint32_t>(j * (kGrid + 1) + i); };
+  for (int j = 0; j < kGrid; ++j)
+    for (int i = 0; i < kGrid; ++i) {
+      swatch.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+      swatch.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  swatch.cell_size = kExtent / 16.0f;  // DESIGN: about 16 cells along the shorter side
+  return swatch;
+}
+
+struct Query {
+  std::vector<glm::vec3> points, normals;
+  std::vector<glm::vec2> translations;
+};
+
+// Output points on a shifted copy of the surface over a sub-patch half the swatch's size, and
+// grid-unit translations for which the swatch covers the sub-patch.
+Query make_query(float cell) {
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> coordinate(2.0f, 6.0f);
+  Query query;
+  for (int k = 0; k < kPoints; ++k) {
+    const float x = coordinate(rng), y = coordinate(rng);
+    query.points.emplace_back(x, y, height(x + 0.37f, y - 0.21f));
+    query.normals.push_back(height_normal(x + 0.37f, y - 0.21f));
+  }
+  for (int a = 0; a < kCandidatesPerSide; ++a)
+    for (int b = 0; b < kCandidatesPerSide; ++b)
+      query.translations.emplace_back((a - kCandidatesPerSide / 2) * cell * 0.5f,
+                                      (b - kCandidatesPerSide / 2) * cell * 0.5f);
+  return query;
+}
+
+void run(benchmark::State& state, engine::Device& device, MatchingCostMapping mapping) {
+  const MatchingSwatch swatch = make_swatch();
+  const Query query = make_query(swatch.cell_size);
+  MatchingCost cost(device, swatch, {mapping, 0});
+  cost.score(query.points, query.normals, query.translations);  // compiles the pipeline lazily
+  double device_seconds = 0.0;
+  std::size_t fallbacks = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(cost.score(query.points, query.normals, query.translations));
+    device_seconds += cost.last_timing().device_seconds;
+    fallbacks += cost.last_host_fallback_count();
+  }
+  const double pairs = static_cast<double>(query.points.size() * query.translations.size());
+  state.counters["pairs_per_s"] = benchmark::Counter(pairs * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["faces"] = static_cast<double>(swatch.triangles.size());
+  state.counters["host_fallbacks"] = static_cast<double>(fallbacks) / state.iterations();
+  if (device_seconds > 0.0) state.counters["device_pairs_per_s"] = pairs * state.iterations() / device_seconds;
+}
+
+}  // namespace
+}  // namespace meshquilt
+
+int main(int argc, char** argv) {
+  using namespace meshquilt;
+  benchmark::Initialize(&argc, argv);
+  std::vector<std::unique_ptr<engine::Device>> devices;
+  devices.push_back(engine::open_device(engine::BackendChoice::cpu));
+  try {
+    devices.push_back(engine::open_device(engine::BackendChoice::vulkan));
+  } catch (const DeviceError& error) {
+    std::cerr << "skipping the Vulkan back end: " << error.what() << "\n";
+  }
+  for (auto& device : devices) {
+    for (auto mapping : {MatchingCostMapping::per_pair, MatchingCostMapping::per_point}) {
+      const std::string name = std::string("matching_cost/") + engine::backend_name(device->backend()) + "/" +
+                               (mapping == MatchingCostMapping::per_pair ? "per_pair" : "per_point");
+      engine::Device* raw = device.get();
+      benchmark::RegisterBenchmark(name.c_str(), [raw, mapping](benchmark::State& state) {
+        run(state, *raw, mapping);
+      })->UseRealTime()->Unit(benchmark::kMillisecond);
+    }
+    std::cerr << engine::backend_name(device->backend()) << ": " << device->name() << "\n";
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
