@@ -1,0 +1,153 @@
+// The `meshquilt inspect` command end to end: JSON output parsed back, and one-line errors with
+// the file name and a non-zero exit code for bad files.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "mesh/mesh_io.h"
+
+namespace meshquilt {
+namespace {
+
+namespace fs = std::filesystem;
+
+TriMesh torus(const Vec3& center, const Vec3& a, const Vec3& b, double R, double r, int nu, int nv) {
+  TriMesh m;
+  const Vec3 n = glm::cross(a, b);
+  for (int i = 0; i < nu; ++i) {
+    const double u = 2.0 * std::numbers::pi * i / nu;
+    for (int j = 0; j < nv; ++j) {
+      const double v = 2.0 * std::numbers::pi * j / nv;
+      m.positions.push_back(center + (R + r * std::cos(v)) * (std::cos(u) * a + std::sin(u) * b) + r * std::sin(v) * n);
+    }
+  }
+  auto id = [&](int i, int j) { return ((i + nu) % nu) * nv + (j + nv) % nv; };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class InspectCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(fs::exists(MESHQUILT_CLI)) << "build the meshquilt executable first: " << MESHQUILT_CLI;
+    dir_ = fs::temp_directory_path() / ("meshquilt_inspect_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CliRun run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = std::string("\"") + MESHQUILT_CLI + "\" inspect " + args + " >\"" + out.string() + "\" 2>\"" +
+                                err.string() + "\"";
+    const int status = std::system(command.c_str());
+    CliRun r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(InspectCli, JsonReportOfLinkedRings) {
+  TriMesh m = torus({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12);
+  const TriMesh b = torus({1, 0, 0}, {1, 0, 0}, {0, 0, 1}, 1.0, 0.25, 32, 12);
+  const auto n = static_cast<int32_t>(m.positions.size());
+  m.positions.insert(m.positions.end(), b.positions.begin(), b.positions.end());
+  for (const Tri& t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  const fs::path file = dir_ / "rings.ply";
+  write_mesh(m, file);
+
+  const CliRun r = run("\"" + file.string() + "\" --json --swatch \"" + file.string() + "\" --plane");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("faces").get<int64_t>(), 2 * 32 * 12 * 2);
+  EXPECT_EQ(j.at("vertices").get<int64_t>(), 2 * 32 * 12);
+  EXPECT_EQ(j.at("elements").get<int>(), 2);
+  EXPECT_EQ(j.at("closed_elements").get<int>(), 2);
+  EXPECT_EQ(j.at("boundary_edges").get<int>(), 0);
+  EXPECT_EQ(j.at("nonmanifold_edges").get<int>(), 0);
+  EXPECT_EQ(j.at("nonmanifold_vertices").get<int>(), 0);
+  EXPECT_EQ(j.at("intersecting_face_pairs").get<int>(), 0);
+  EXPECT_EQ(j.at("self_intersecting_face_pairs").get<int>(), 0);
+  EXPECT_EQ(j.at("swatch_elements").get<int>(), 2);
+  EXPECT_DOUBLE_EQ(j.at("element_area_ks").get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(j.at("element_extent_ks").get<double>(), 0.0);
+  EXPECT_GT(j.at("coverage").get<double>(), 0.0);
+  EXPECT_LE(j.at("coverage").get<double>(), 1.0);
+}
+
+TEST_F(InspectCli, BaseHeightsAndReadableReport) {
+  TriMesh base;
+  base.positions = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}};
+  base.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const fs::path base_file = dir_ / "base.obj", ring_file = dir_ / "ring.off";
+  write_mesh(base, base_file);
+  write_mesh(torus({0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12), ring_file);
+  const CliRun r = run("\"" + ring_file.string() + "\" --base \"" + base_file.string() + "\" --shell-height 0.1 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const double diagonal = std::sqrt(32.0);
+  EXPECT_NEAR(j.at("height_min").get<double>(), 0.25 / diagonal, 1e-9);
+  EXPECT_NEAR(j.at("height_max").get<double>(), 0.75 / diagonal, 1e-9);
+  // H = 0.1 diagonals = 0.566: the vertices above it are outside.
+  int expected = 0;
+  for (const Vec3& p : torus({0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12).positions) expected += p.z > 0.1 * diagonal;
+  EXPECT_EQ(j.at("outside_shell_vertices").get<int>(), expected);
+
+  const CliRun text = run("\"" + ring_file.string() + "\"");
+  ASSERT_EQ(text.code, 0);
+  EXPECT_NE(text.out.find("elements:"), std::string::npos);
+  EXPECT_NE(text.out.find("1, of which 1 closed"), std::string::npos);
+}
+
+bool one_line_naming(const std::string& err, const std::string& name) {
+  return !err.empty() && err.find('\n') == err.size() - 1 && err.find(name) != std::string::npos;
+}
+
+TEST_F(InspectCli, BrokenAndMissingFilesGiveOneLineErrors) {
+  const fs::path broken = dir_ / "broken.off";
+  std::ofstream(broken) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";  // truncated
+  const CliRun r = run("\"" + broken.string() + "\" --json");
+  EXPECT_NE(r.code, 0);
+  EXPECT_TRUE(one_line_naming(r.err, "broken.off")) << r.err;
+  EXPECT_TRUE(r.out.empty());
+
+  const CliRun missing = run("\"" + (dir_ / "nowhere.ply").string() + "\"");
+  EXPECT_EQ(missing.code, 3);  // ExitCode::file_unreadable
+  EXPECT_TRUE(one_line_naming(missing.err, "nowhere.ply")) << missing.err;
+
+  const CliRun bad_swatch = run("\"" + broken.string() + "\" --plane --base \"" + broken.string() + "\"");
+  EXPECT_EQ(bad_swatch.code, 2);  // --plane and --base exclude each other: usage error
+}
+
+}  // namespace
+}  // namespace meshquilt
