@@ -517,6 +517,32 @@ TEST(Weave, Satin41OnTenByTen) {
   }
 }
 
+TEST(Weave, RandomJacquardDesignFromAnImage) {
+  // Every local over/under configuration turns up in a random design; the generator's clearance
+  // analysis must hold for all of them, which the exact intersection check confirms.
+  const fs::path dir = scratch("jacquard");
+  const int n = 12;
+  std::string pbm = "P1\n" + std::to_string(n) + " " + std::to_string(n) + "\n";
+  uint64_t state = 12345;
+  std::vector<std::vector<int>> black(n, std::vector<int>(n));
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      black[r][c] = (state >> 33) & 1;
+      pbm += black[r][c] ? "1 " : "0 ";
+    }
+    pbm += "\n";
+  }
+  std::ofstream(dir / "design.pbm") << pbm;
+  WeaveOptions o = WeaveOptions::small();
+  o.pattern = parse_weave_pattern((dir / "design.pbm").string());
+  const TriMesh m = make_weave(o);
+  check_swatch(m, {2 * n, true, 2}, "weave_jacquard");
+  // Image row 0 is the top (largest y, the last weft); black puts the warp over.
+  check_weave_pattern(m, o, n, n, [&](int i, int j) { return black[n - 1 - j][i] == 1; });
+  fs::remove_all(dir);
+}
+
 TEST(Weave, RejectsBadCountsAndTouchingYarns) {
   auto with = [](auto change) {
     WeaveOptions o = WeaveOptions::small();
@@ -529,6 +555,48 @@ TEST(Weave, RejectsBadCountsAndTouchingYarns) {
   EXPECT_EQ(with([](WeaveOptions& o) { o.amplitude = 1.5; }), ExitCode::invalid_option);   // yarn folds
   EXPECT_EQ(with([](WeaveOptions& o) { o.sides = 2; }), ExitCode::invalid_option);
   EXPECT_EQ(with([](WeaveOptions&) {}), ExitCode::ok);
+}
+
+// The size checks are sound: swatches at the edge of what they accept still do not intersect.
+template <class Options, class Make>
+Options at_acceptance_limit(Options o, double Options::*field, double accepted, double rejected, Make make) {
+  for (int it = 0; it < 20; ++it) {
+    const double mid = 0.5 * (accepted + rejected);
+    o.*field = mid;
+    bool ok = true;
+    try {
+      make(o);
+    } catch (const InputError&) {
+      ok = false;
+    }
+    (ok ? accepted : rejected) = mid;
+  }
+  o.*field = accepted;
+  return o;
+}
+
+TEST(SizeChecks, WeaveAtTheLimitDoesNotIntersect) {
+  for (int segments : {3, 4, 6}) {
+    WeaveOptions o = WeaveOptions::small();
+    o.segments_per_pitch = segments;
+    o.pattern = twill_pattern(1, 2);
+    o.warps = o.wefts = 6;
+    const WeaveOptions limit = at_acceptance_limit(o, &WeaveOptions::amplitude, 0.3, 0.05, make_weave);
+    EXPECT_LT(limit.amplitude, 0.3);
+    const TriMesh m = make_weave(limit);
+    EXPECT_EQ(intersecting_pairs(m), 0) << "segments " << segments << " amplitude " << limit.amplitude;
+  }
+}
+
+TEST(SizeChecks, ChainmailAtTheLimitDoesNotIntersect) {
+  for (int segments : {8, 12, 24}) {
+    ChainmailOptions o = ChainmailOptions::small();
+    o.ring_segments = segments;
+    const ChainmailOptions limit = at_acceptance_limit(o, &ChainmailOptions::wire_radius, 0.1, 0.4, make_chainmail);
+    EXPECT_GT(limit.wire_radius, 0.15) << "segments " << segments;
+    const TriMesh m = make_chainmail(limit);
+    EXPECT_EQ(intersecting_pairs(m), 0) << "segments " << segments << " wire " << limit.wire_radius;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
