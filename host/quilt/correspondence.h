@@ -50,7 +50,8 @@ struct Correspondences {
 //! Vertices that no triangle uses get no pair. in_overlap is called once per output vertex, from
 //! the calling thread; the face queries then run in parallel (TBB) with a deterministic result.
 //! out_elements  #E_out meshes; in_elements  #E_in meshes (`elements` ids are ignored in both)
-//! \throw InputError (invalid_option) for lambda < 0 or max_distance_factor <= 0 (or non-finite);
+//! \throw InputError (invalid_option) for lambda < 0 or non-finite, max_distance_factor <= 0 or NaN
+//!        (infinity turns pruning (b) off);
 //!        InputError for a triangle index out of range.
 Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
                                      const std::vector<TriMesh>& in_elements,
