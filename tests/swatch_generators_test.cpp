@@ -13,6 +13,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -373,6 +374,33 @@ TEST(Chainmail, SmallPreset) {
   check_round_trip(m, "chainmail_small");
 }
 
+// Periodic: copies shifted by the period neither touch the swatch nor fail to link with it.
+TEST(Chainmail, TilesWithItsPeriod) {
+  const ChainmailOptions o = ChainmailOptions::small();
+  const TriMesh m = make_chainmail(o);
+  const glm::dvec2 period = chainmail_period(o);
+  const int count = o.rows * o.columns;
+  for (const Vec3 shift : {Vec3(period.x, 0, 0), Vec3(0, period.y, 0), Vec3(period.x, period.y, 0)}) {
+    TriMesh both = m;
+    const auto offset = static_cast<int32_t>(m.positions.size());
+    for (const Vec3& p : m.positions) both.positions.push_back(p + shift);
+    for (const Tri& t : m.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    for (int32_t e : m.elements) both.elements.push_back(e + count);
+    EXPECT_EQ(intersecting_pairs(both), 0);
+  }
+  // Shifted up by the period, row 0 of the copy sits where row `rows` would: the last row's
+  // ring (c, rows-1) links copy rings (c, 0) and (c+1, 0), rows being odd/even alternately.
+  TriMesh both = m;
+  const auto offset = static_cast<int32_t>(m.positions.size());
+  for (const Vec3& p : m.positions) both.positions.push_back(p + Vec3(0, period.y, 0));
+  for (const Tri& t : m.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  for (int32_t e : m.elements) both.elements.push_back(e + count);
+  const int last = (o.rows - 1) * o.columns;
+  EXPECT_TRUE(threads_hole(both, last + 0, count + 0));
+  EXPECT_TRUE(threads_hole(both, last + 0, count + 1));
+  EXPECT_FALSE(threads_hole(both, last + 0, count + 2));
+}
+
 ExitCode error_code(const std::function<void()>& f) {
   try {
     f();
@@ -444,6 +472,23 @@ void check_weave_pattern(const TriMesh& m, const WeaveOptions& o, int warps, int
     EXPECT_NEAR(b.hi.x, all.hi.x, 0.5 * o.pitch) << "weft " << j;
     EXPECT_LT(b.extent().y, o.pitch) << "weft " << j;
     EXPECT_GT(b.extent().x, (warps - 0.5) * o.pitch) << "weft " << j;
+  }
+  // Periodic: shifted by the period, each yarn's end section lands exactly on its start section
+  // (its cap ring and cap centre), so tiled copies continue every yarn seamlessly.
+  const double L_x = warps * o.pitch, L_y = wefts * o.pitch;
+  for (int e = 0; e < warps + wefts; ++e) {
+    const Vec3 shift = e < warps ? Vec3(0, L_y, 0) : Vec3(L_x, 0, 0);
+    std::vector<Vec3> verts;
+    for (size_t f = 0; f < m.triangles.size(); ++f)
+      if (m.elements[f] == e)
+        for (int32_t v : m.triangles[f]) verts.push_back(m.positions[v]);
+    std::sort(verts.begin(), verts.end(), [](const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    int matched = 0;
+    for (const Vec3& p : verts) {
+      for (const Vec3& q : verts) matched += glm::length(p + shift - q) < 1e-9 * o.pitch;
+    }
+    EXPECT_GE(matched, o.sides + 1) << "yarn " << e;
   }
   int mismatches = 0;
   for (int j = 0; j < wefts; ++j) {

@@ -8,7 +8,8 @@
 namespace meshquilt {
 
 void append_tube(TriMesh& mesh, const std::vector<Vec3>& centre, const std::vector<Vec3>& normal,
-                 double radius, int sides, TubeEnds ends, int32_t element) {
+                 double radius, int sides, TubeEnds ends, int32_t element,
+                 const std::vector<Vec3>& tangent_given) {
   const int count = static_cast<int>(centre.size());
   const bool loop = ends == TubeEnds::loop;
   const auto base = static_cast<int32_t>(mesh.positions.size());
@@ -17,7 +18,7 @@ void append_tube(TriMesh& mesh, const std::vector<Vec3>& centre, const std::vect
     // neighbours, so a periodic centreline gives a periodic surface.
     const int prev = loop ? (k + count - 1) % count : std::max(k - 1, 0);
     const int next = loop ? (k + 1) % count : std::min(k + 1, count - 1);
-    const Vec3 tangent = glm::normalize(centre[next] - centre[prev]);
+    const Vec3 tangent = glm::normalize(tangent_given.empty() ? centre[next] - centre[prev] : tangent_given[k]);
     const Vec3 n = glm::normalize(normal[k] - glm::dot(normal[k], tangent) * tangent);
     const Vec3 b = glm::cross(tangent, n);
     for (int s = 0; s < sides; ++s) {

@@ -21,10 +21,13 @@ enum class TubeEnds {
 //!          cross-section circle at point k is centre[k] + radius (cos a normal[k] + sin a
 //!          binormal[k]) with binormal = tangent x normal
 //! sides    vertices per cross-section (>= 3)
+//! tangent  #K centreline tangents, or empty for central differences (one-sided at open
+//!          ends); give exact ones when the tube must continue seamlessly past a capped end
 //! Adds K*sides (+2 when capped) vertices and 2*K*sides (loop) or 2*(K-1)*sides + 2*sides
 //! (capped) faces. Precondition: the swept circles do not intersect each other (radius below the
 //! centreline's radius of curvature); not checked.
 void append_tube(TriMesh& mesh, const std::vector<Vec3>& centre, const std::vector<Vec3>& normal,
-                 double radius, int sides, TubeEnds ends, int32_t element);
+                 double radius, int sides, TubeEnds ends, int32_t element,
+                 const std::vector<Vec3>& tangent = {});
 
 }  // namespace meshquilt

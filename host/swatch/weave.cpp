@@ -29,6 +29,15 @@ double centreline_height(double u, double amplitude, const Sign& sign) {
   return amplitude * (0.5 * (a + b) + 0.5 * (a - b) * std::cos(kPi * f));
 }
 
+// d(height)/du of centreline_height.
+template <class Sign>
+double centreline_slope(double u, double amplitude, const Sign& sign) {
+  const double v = u - 0.5;
+  const int k = static_cast<int>(std::floor(v));
+  const double f = v - k;
+  return -amplitude * 0.5 * (sign(k) - sign(k + 1)) * kPi * std::sin(kPi * f);
+}
+
 int resolve_count(int given, int repeat, int hint) {
   if (given != 0) return given;
   return std::max(1, static_cast<int>(std::lround(static_cast<double>(hint) / repeat))) * repeat;
@@ -144,10 +153,11 @@ TriMesh make_weave(const WeaveOptions& o) {
   const int warps = counts.x, wefts = counts.y;
   validate(o, warps, wefts);
   TriMesh mesh;
-  std::vector<Vec3> centre, normal;
+  std::vector<Vec3> centre, normal, tangent;
   auto sweep = [&](int yarns, int length, bool warp) {
     const int points = length * o.segments_per_pitch + 1;
     centre.resize(points);
+    tangent.resize(points);
     normal.assign(points, warp ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
     for (int n = 0; n < yarns; ++n) {
       // A warp is on top where the pattern says so; a weft where it does not.
@@ -157,9 +167,13 @@ TriMesh make_weave(const WeaveOptions& o) {
         const double u = static_cast<double>(k) / o.segments_per_pitch;
         const double along = u * o.pitch;
         const double z = centreline_height(u, o.amplitude, sign);
+        const double dz = centreline_slope(u, o.amplitude, sign) / o.pitch;
         centre[k] = warp ? Vec3(across, along, z) : Vec3(along, across, z);
+        tangent[k] = warp ? Vec3(0.0, 1.0, dz) : Vec3(1.0, 0.0, dz);
       }
-      append_tube(mesh, centre, normal, o.yarn_radius, o.sides, TubeEnds::capped, warp ? n : warps + n);
+      // Exact tangents make the end sections periodic: the cap at one border is the cap at the
+      // other shifted by the period, so tiled copies continue each yarn without a kink.
+      append_tube(mesh, centre, normal, o.yarn_radius, o.sides, TubeEnds::capped, warp ? n : warps + n, tangent);
     }
   };
   sweep(warps, wefts, true);
