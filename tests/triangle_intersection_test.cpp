@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <vector>
 
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
@@ -48,6 +49,92 @@ TEST(ExactPredicates, Orient3dMatchesIntegerArithmeticNearDegenerate) {
     ASSERT_EQ(orient3d(a, b, c, d), expected) << i;
   }
   EXPECT_GT(zeros, 50000);
+}
+
+// Reference exact orient3d with heap expansions summed by Grow-Expansion (quadratic, simple):
+// a different summation from the library's merge-based one.
+namespace slow {
+using E = std::vector<double>;
+void two_sum(double a, double b, double& x, double& y) {
+  x = a + b;
+  const double bv = x - a, av = x - bv;
+  y = (a - av) + (b - bv);
+}
+E grow(const E& e, double b) {
+  E h;
+  double q = b;
+  for (double x : e) {
+    double s, t;
+    two_sum(q, x, s, t);
+    h.push_back(t);
+    q = s;
+  }
+  h.push_back(q);
+  return h;
+}
+E sum(E e, const E& f) {
+  for (double x : f) e = grow(e, x);
+  return e;
+}
+E scale(const E& e, double b) {
+  E h{0.0};
+  for (double x : e) {
+    const double p = x * b;
+    h = grow(grow(h, std::fma(x, b, -p)), p);
+  }
+  return h;
+}
+E mul(const E& e, const E& f) {
+  E h{0.0};
+  for (double x : f) h = sum(h, scale(e, x));
+  return h;
+}
+E diff(double a, double b) {
+  double x, y;
+  two_sum(a, -b, x, y);
+  return {y, x};
+}
+int sign(const E& e) {
+  // Components are non-overlapping but may include zeros anywhere: the largest magnitude wins.
+  double top = 0.0;
+  for (double x : e)
+    if (std::abs(x) > std::abs(top)) top = x;
+  return (top > 0) - (top < 0);
+}
+int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const E bx = diff(b.x, a.x), by = diff(b.y, a.y), bz = diff(b.z, a.z);
+  const E cx = diff(c.x, a.x), cy = diff(c.y, a.y), cz = diff(c.z, a.z);
+  const E dx = diff(d.x, a.x), dy = diff(d.y, a.y), dz = diff(d.z, a.z);
+  auto neg = [](E e) {
+    for (double& x : e) x = -x;
+    return e;
+  };
+  const E nx = sum(mul(by, cz), neg(mul(bz, cy)));
+  const E ny = sum(mul(bz, cx), neg(mul(bx, cz)));
+  const E nz = sum(mul(bx, cy), neg(mul(by, cx)));
+  return sign(sum(sum(mul(nx, dx), mul(ny, dy)), mul(nz, dz)));
+}
+}  // namespace slow
+
+TEST(ExactPredicates, Orient3dMatchesReferenceWithInexactDifferences) {
+  // Mixed magnitudes make the coordinate differences inexact in double; d is constructed on
+  // the plane in floating point, so it lies within rounding of it: the hard cases.
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> e(-30, 30);
+  int nonzero = 0;
+  for (int i = 0; i < 1500; ++i) {
+    auto pt = [&] { return Vec3(std::ldexp(u(rng), e(rng)), std::ldexp(u(rng), e(rng)), std::ldexp(u(rng), e(rng))); };
+    const Vec3 a = pt(), b = pt(), c = pt();
+    const double s = u(rng), t = u(rng);
+    const Vec3 d = a + s * (b - a) + t * (c - a);
+    const int expected = slow::orient3d(a, b, c, d);
+    nonzero += expected != 0;
+    ASSERT_EQ(orient3d(a, b, c, d), expected) << i;
+    ASSERT_EQ(orient3d(b, c, a, d), expected) << i;  // cyclic permutations agree
+    ASSERT_EQ(orient3d(a, c, b, d), -expected) << i;
+  }
+  EXPECT_GT(nonzero, 100);
 }
 
 TEST(ExactPredicates, Orient2dOnUlpGrid) {

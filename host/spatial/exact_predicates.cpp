@@ -1,115 +1,127 @@
 #include "spatial/exact_predicates.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace meshquilt {
 namespace {
 
-// Expansions (Shewchuk 1997): sums of non-overlapping doubles in increasing magnitude, so that
-// the sign of the sum is the sign of the last non-zero component. Only the rare near-degenerate
-// cases reach this code, so clarity wins over speed here.
-using Expansion = std::vector<double>;
+// Expansions (Shewchuk 1997): sums of non-overlapping doubles in increasing magnitude, so the
+// sign of the sum is the sign of the last component (zeros are eliminated). Fixed capacity on
+// the stack: flat and near-flat meshes send many tests here, so no heap allocation.
+template <int N>
+struct Expansion {
+  double v[N];
+  int n = 0;
+};
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon() / 2.0;  // 2^-53
 constexpr double kO3dErrBound = (7.0 + 56.0 * kEpsilon) * kEpsilon;
 constexpr double kO2dErrBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
 
-void two_sum(double a, double b, double& x, double& y) {
+inline void two_sum(double a, double b, double& x, double& y) {
   x = a + b;
   const double bv = x - a;
   const double av = x - bv;
   y = (a - av) + (b - bv);
 }
 
-void two_product(double a, double b, double& x, double& y) {
+inline void two_product(double a, double b, double& x, double& y) {
   x = a * b;
   y = std::fma(a, b, -x);
 }
 
-Expansion difference(double a, double b) {
+// a - b exactly, as one or two components.
+inline Expansion<2> difference(double a, double b) {
   double x, y;
   two_sum(a, -b, x, y);
-  return {y, x};
+  Expansion<2> e;
+  if (y != 0.0) e.v[e.n++] = y;
+  e.v[e.n++] = x;
+  return e;
 }
 
-// Grow-Expansion with zero elimination.
-Expansion grow(const Expansion& e, double b) {
-  Expansion h;
-  h.reserve(e.size() + 1);
-  double q = b;
-  for (double ei : e) {
+// Fast-Expansion-Sum with zero elimination: merge by magnitude, then accumulate.
+template <int A, int B>
+Expansion<A + B> add(const Expansion<A>& e, const Expansion<B>& f) {
+  Expansion<A + B> h;
+  int i = 0, j = 0;
+  auto next = [&]() {
+    if (j >= f.n || (i < e.n && std::abs(e.v[i]) < std::abs(f.v[j]))) return e.v[i++];
+    return f.v[j++];
+  };
+  double q = next();
+  while (i < e.n || j < f.n) {
     double sum, err;
-    two_sum(q, ei, sum, err);
-    if (err != 0.0) h.push_back(err);
+    two_sum(q, next(), sum, err);
+    if (err != 0.0) h.v[h.n++] = err;
     q = sum;
   }
-  if (q != 0.0 || h.empty()) h.push_back(q);
-  return h;
-}
-
-Expansion sum(const Expansion& e, const Expansion& f) {
-  Expansion h = e;
-  for (double fi : f) h = grow(h, fi);
+  if (q != 0.0 || h.n == 0) h.v[h.n++] = q;
   return h;
 }
 
 // Scale-Expansion with zero elimination.
-Expansion scale(const Expansion& e, double b) {
-  Expansion h;
-  if (e.empty()) return h;
+template <int A>
+Expansion<2 * A> scale(const Expansion<A>& e, double b) {
+  Expansion<2 * A> h;
   double q, hh;
-  two_product(e[0], b, q, hh);
-  if (hh != 0.0) h.push_back(hh);
-  for (size_t i = 1; i < e.size(); ++i) {
-    double t1, t0;
-    two_product(e[i], b, t1, t0);
-    double s, err;
-    two_sum(q, t0, s, err);
-    if (err != 0.0) h.push_back(err);
-    two_sum(t1, s, q, err);
-    if (err != 0.0) h.push_back(err);
+  two_product(e.v[0], b, q, hh);
+  if (hh != 0.0) h.v[h.n++] = hh;
+  for (int i = 1; i < e.n; ++i) {
+    double p1, p0, sum, err;
+    two_product(e.v[i], b, p1, p0);
+    two_sum(q, p0, sum, err);
+    if (err != 0.0) h.v[h.n++] = err;
+    two_sum(p1, sum, q, err);
+    if (err != 0.0) h.v[h.n++] = err;
   }
-  if (q != 0.0 || h.empty()) h.push_back(q);
+  if (q != 0.0 || h.n == 0) h.v[h.n++] = q;
   return h;
 }
 
-Expansion product(const Expansion& e, const Expansion& f) {
-  Expansion h{0.0};
-  for (double fi : f) h = sum(h, scale(e, fi));
-  return h;
+// Product of an expansion and a two-component expansion.
+template <int A>
+Expansion<4 * A> multiply(const Expansion<A>& e, const Expansion<2>& f) {
+  if (f.n == 1) {
+    const Expansion<2 * A> s = scale(e, f.v[0]);
+    Expansion<4 * A> h;
+    h.n = s.n;
+    std::copy(s.v, s.v + s.n, h.v);
+    return h;
+  }
+  return add(scale(e, f.v[0]), scale(e, f.v[1]));
 }
 
-Expansion negate(Expansion e) {
-  for (double& x : e) x = -x;
+template <int A>
+Expansion<A> negate(Expansion<A> e) {
+  for (int i = 0; i < e.n; ++i) e.v[i] = -e.v[i];
   return e;
 }
 
-int sign_of(const Expansion& e) {
-  for (auto it = e.rbegin(); it != e.rend(); ++it) {
-    if (*it > 0.0) return 1;
-    if (*it < 0.0) return -1;
-  }
-  return 0;
+template <int A>
+int sign_of(const Expansion<A>& e) {
+  const double top = e.v[e.n - 1];
+  return (top > 0.0) - (top < 0.0);
 }
 
-int sign_of(double x) { return (x > 0.0) - (x < 0.0); }
+inline int sign_of(double x) { return (x > 0.0) - (x < 0.0); }
 
-// det[b - a, c - a] with exact differences.
-Expansion cross2(const Expansion& bx, const Expansion& by, const Expansion& cx, const Expansion& cy) {
-  return sum(product(bx, cy), negate(product(by, cx)));
+// b_x c_y - b_y c_x of exact differences.
+Expansion<16> cross2(const Expansion<2>& bx, const Expansion<2>& by, const Expansion<2>& cx, const Expansion<2>& cy) {
+  return add(multiply(bx, cy), negate(multiply(by, cx)));
 }
 
 int orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Expansion bx = difference(b.x, a.x), by = difference(b.y, a.y), bz = difference(b.z, a.z);
-  const Expansion cx = difference(c.x, a.x), cy = difference(c.y, a.y), cz = difference(c.z, a.z);
-  const Expansion dx = difference(d.x, a.x), dy = difference(d.y, a.y), dz = difference(d.z, a.z);
+  const Expansion<2> bx = difference(b.x, a.x), by = difference(b.y, a.y), bz = difference(b.z, a.z);
+  const Expansion<2> cx = difference(c.x, a.x), cy = difference(c.y, a.y), cz = difference(c.z, a.z);
+  const Expansion<2> dx = difference(d.x, a.x), dy = difference(d.y, a.y), dz = difference(d.z, a.z);
   // ((b - a) x (c - a)) . (d - a)
-  const Expansion nx = cross2(by, bz, cy, cz);
-  const Expansion ny = cross2(bz, bx, cz, cx);
-  const Expansion nz = cross2(bx, by, cx, cy);
-  return sign_of(sum(sum(product(nx, dx), product(ny, dy)), product(nz, dz)));
+  const Expansion<16> nx = cross2(by, bz, cy, cz);
+  const Expansion<16> ny = cross2(bz, bx, cz, cx);
+  const Expansion<16> nz = cross2(bx, by, cx, cy);
+  return sign_of(add(add(multiply(nx, dx), multiply(ny, dy)), multiply(nz, dz)));
 }
 
 }  // namespace
@@ -128,6 +140,9 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
                            (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);
   // Shewchuk's det(a,b,c,d) with d as apex equals -((b-a)x(c-a)).(d-a).
   if (std::abs(det) > kO3dErrBound * permanent) return -sign_of(det);
+  // A zero permanent means every product has an exactly zero difference (equal coordinates,
+  // as in axis-aligned flat meshes): the determinant is exactly zero.
+  if (permanent == 0.0) return 0;
   return orient3d_exact(a, b, c, d);
 }
 
@@ -135,9 +150,10 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   const double left = (bx - ax) * (cy - ay);
   const double right = (by - ay) * (cx - ax);
   const double det = left - right;
-  if (std::abs(det) > kO2dErrBound * (std::abs(left) + std::abs(right))) return sign_of(det);
-  const Expansion e = cross2(difference(bx, ax), difference(by, ay), difference(cx, ax), difference(cy, ay));
-  return sign_of(e);
+  const double permanent = std::abs(left) + std::abs(right);
+  if (std::abs(det) > kO2dErrBound * permanent) return sign_of(det);
+  if (permanent == 0.0) return 0;
+  return sign_of(cross2(difference(bx, ax), difference(by, ay), difference(cx, ax), difference(cy, ay)));
 }
 
 }  // namespace meshquilt
