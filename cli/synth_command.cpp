@@ -32,6 +32,8 @@ struct SynthArgs {
   std::string progress = "auto";
   std::string output = "quilt.ply";
   int cells = 16;
+  int max_patches = 0;
+  bool cleanup = true;
 };
 
 void parse_plane(const std::string& text, double* width, double* height) {
@@ -84,6 +86,8 @@ void run_synth(const SynthArgs& args) {
   options.height = height;
   options.seed = args.seed;
   options.cells_across_swatch = args.cells;
+  options.max_patches = args.max_patches;
+  options.cleanup = args.cleanup;
   options.progress = [&](const QuiltProgress& p) { progress.update(p.processed_cells, p.total_cells); };
   QuiltStats stats;
   const TriMesh result = quilt_plane(swatch, *device, options, &stats);
@@ -135,6 +139,8 @@ void add_synth_command(CLI::App& app) {
   cmd->add_option("--stats", args->stats, "write statistics (faces, elements, seconds per stage) as JSON");
   cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();
   cmd->add_option("--cells", args->cells, "grid cells along the swatch's shorter side")->capture_default_str();
+  cmd->add_option("--max-patches", args->max_patches, "stop after this many patches (0: fill the plane)");
+  cmd->add_flag("!--no-cleanup", args->cleanup, "keep elements that could not be made whole");
   cmd->add_option("-o,--output", args->output, "output mesh (.ply with element ids, .obj with groups, .off, .stl)")
       ->capture_default_str();
   cmd->callback([args] { run_synth(*args); });

@@ -31,7 +31,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   }
   bvh_ = std::make_unique<FaceBvh>(swatch_);
 
-  kernels::MatchingSwatch device_swatch;
+  MatchingSwatch device_swatch;
   device_swatch.positions.reserve(swatch.num_vertices());
   for (const Vec3& p : swatch.positions) device_swatch.positions.emplace_back(p);
   device_swatch.triangles.reserve(swatch.num_faces());
@@ -40,7 +40,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
                                        static_cast<uint32_t>(t[2])});
   device_swatch.cell_size = static_cast<float>(cell_size);
   device_swatch.lambda = static_cast<float>(options.lambda);
-  kernel_ = std::make_unique<kernels::MatchingCost>(device, device_swatch);
+  kernel_ = std::make_unique<MatchingCost>(device, device_swatch);
 }
 
 GeometryMatcher::~GeometryMatcher() = default;

@@ -20,9 +20,7 @@ namespace meshquilt {
 namespace engine {
 class Device;
 }
-namespace kernels {
 class MatchingCost;
-}
 class FaceBvh;
 
 struct MatchingOptions {
@@ -62,7 +60,7 @@ class GeometryMatcher {
   double cell_size_;
   std::vector<Vec3> face_normals_;
   std::unique_ptr<FaceBvh> bvh_;
-  std::unique_ptr<kernels::MatchingCost> kernel_;
+  std::unique_ptr<MatchingCost> kernel_;
 };
 
 }  // namespace meshquilt

@@ -78,7 +78,7 @@ bool collides(const TriMesh& candidate, const std::vector<const TriMesh*>& other
   parts.push_back(candidate);
   for (const TriMesh* o : others) parts.push_back(*o);
   const TriMesh joined = join_elements(parts);
-  const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::between_elements);
+  const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
   for (const auto& [a, b] : pairs)
     if (joined.elements[a] == 0 || joined.elements[b] == 0) return true;
   return false;
@@ -143,7 +143,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
       StageTimer timer(seconds, "seed");
       seed_cell = seeds.next_seed();
     }
-    if (!seed_cell) break;
+    if (!seed_cell || (options.max_patches > 0 && stats.patches >= options.max_patches)) break;
     const int seed_x = *seed_cell % nx, seed_y = *seed_cell / nx;
 
     // Output-sub-patch: sub_nx x sub_ny cells around the seed, inside the domain.
@@ -210,16 +210,33 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
       corr = find_correspondences(outs, inputs, in_overlap, options.correspondence);
     }
 
+    // Merge partners, one to one, in decreasing order of shared pairs. Interlinked elements
+    // (chain mail) relate to their linked neighbours too, but only through a few pairs where the
+    // rings pass through each other; constraints from those would pull rings out of shape, so
+    // deformation uses the partners' pairs only.
+    std::vector<const ElementRelation*> partners;
+    std::vector<uint8_t> in_partnered(inputs.size(), 0);
     {
-      // Deform both sides toward c = (v_out + h_in) / 2 (Eq. 5 and 6), collecting every
-      // constraint of an element that relates to several.
+      std::vector<uint8_t> out_partnered(outs.size(), 0);
+      for (const ElementRelation& r : corr.relations) {
+        if (out_partnered[r.out_element] || in_partnered[r.in_element]) continue;
+        out_partnered[r.out_element] = in_partnered[r.in_element] = 1;
+        partners.push_back(&r);
+      }
+    }
+
+    {
+      // Deform both sides toward c = (v_out + h_in) / 2 (Eq. 5 and 6).
       StageTimer timer(seconds, "deform");
       std::vector<std::vector<VertexConstraint>> out_constraints(outs.size());
       std::vector<std::vector<FaceConstraint>> in_constraints(inputs.size());
-      for (const VertexFacePair& p : corr.pairs) {
-        const Vec3 target = 0.5 * (outs[p.out_element].positions[p.out_vertex] + p.closest);
-        out_constraints[p.out_element].push_back({p.out_vertex, target});
-        in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
+      for (const ElementRelation* r : partners) {
+        for (int32_t k : r->pairs) {
+          const VertexFacePair& p = corr.pairs[k];
+          const Vec3 target = 0.5 * (outs[p.out_element].positions[p.out_vertex] + p.closest);
+          out_constraints[p.out_element].push_back({p.out_vertex, target});
+          in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
+        }
       }
       for (size_t o = 0; o < outs.size(); ++o)
         if (!out_constraints[o].empty())
@@ -231,11 +248,8 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
 
     {
       StageTimer timer(seconds, "merge");
-      std::vector<uint8_t> out_done(outs.size(), 0), in_done(inputs.size(), 0), in_related(inputs.size(), 0);
-      for (const ElementRelation& r : corr.relations) {
-        in_related[r.in_element] = 1;
-        if (out_done[r.out_element] || in_done[r.in_element]) continue;
-        out_done[r.out_element] = in_done[r.in_element] = 1;
+      for (const ElementRelation* partner : partners) {
+        const ElementRelation& r = *partner;
         MergeResult merged = merge_elements(outs[r.out_element], inputs[r.in_element], in_overlap, options.merging);
         switch (merged.outcome) {
           case MergeOutcome::stitched: ++stats.stitched; outs[r.out_element] = std::move(merged.element); break;
@@ -251,7 +265,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
       // Input elements not merged: added as they are, unless they lie wholly over existing output
       // or would pass through it (an input that related to an element merged with another one).
       for (size_t i = 0; i < inputs.size(); ++i) {
-        if (in_done[i]) continue;
+        if (in_partnered[i]) continue;
         bool all_overlap = true;
         for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && in_overlap(p);
         const Rect b = xy_bounds(inputs[i]);
@@ -304,7 +318,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
           part_of.push_back(i);
         }
       const TriMesh joined = join_elements(parts);
-      const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::between_elements);
+      const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
       std::map<std::pair<int32_t, int32_t>, int> element_pairs;
       for (const auto& [a, b] : pairs)
         ++element_pairs[std::minmax(joined.elements[a], joined.elements[b])];

@@ -38,6 +38,7 @@ struct PlanarQuiltOptions {
   double sub_patch_fraction = 0.5;   //!< output-sub-patch side / swatch side
   uint64_t seed = 1;                 //!< seeds every random choice
   bool cleanup = true;               //!< drop elements that could not be made whole
+  int max_patches = 0;               //!< stop after this many patches (0: until done); for inspection
   MatchingOptions matching;
   CorrespondenceOptions correspondence;
   DeformationOptions deformation;
