@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Scratch : public ::testing::Test {
+class NetpbmFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("meshquilt_swatch_patterns_" + std::string(
@@ -44,14 +44,14 @@ void expect_bitmap(const GrayImage& image) {
     for (int c = 0; c < 10; ++c) EXPECT_EQ(image.at(c, r), kBits[r][c] ? 0.0 : 1.0) << c << "," << r;
 }
 
-TEST_F(Scratch, PlainAndRawBitmapsAgree) {
+TEST_F(NetpbmFiles, PlainAndRawBitmapsAgree) {
   expect_bitmap(read_netpbm(write("a.pbm", "P1\n# comment\n10 2\n1 1 0 0 0 0 0 0 0 1\n0011111110\n")));
   // Raw rows: 11000000 01xxxxxx, 00111111 10xxxxxx (padding bits set to check they are ignored).
   const std::string raw = std::string("P4\n10 2\n") + char(0xC0) + char(0x7F) + char(0x3F) + char(0xBF);
   expect_bitmap(read_netpbm(write("b.pbm", raw)));
 }
 
-TEST_F(Scratch, PlainAndRawGraymapsAgree) {
+TEST_F(NetpbmFiles, PlainAndRawGraymapsAgree) {
   const GrayImage plain = read_netpbm(write("a.pgm", "P2 3 2 #c\n 255\n0 51 255\n102 204 255\n"));
   ASSERT_EQ(plain.width, 3);
   ASSERT_EQ(plain.height, 2);
@@ -67,13 +67,13 @@ TEST_F(Scratch, PlainAndRawGraymapsAgree) {
   for (size_t k = 0; k < plain.values.size(); ++k) EXPECT_NEAR(w.values[k], plain.values[k], 1e-15);
 }
 
-TEST_F(Scratch, ColourImagesBecomeLuma) {
+TEST_F(NetpbmFiles, ColourImagesBecomeLuma) {
   const GrayImage image = read_netpbm(write("a.ppm", "P3 2 1 255 255 0 0 0 0 255\n"));
   EXPECT_NEAR(image.at(0, 0), 0.299, 1e-12);
   EXPECT_NEAR(image.at(1, 0), 0.114, 1e-12);
 }
 
-TEST_F(Scratch, BadImagesAreIoErrors) {
+TEST_F(NetpbmFiles, BadImagesAreIoErrors) {
   auto code = [](const fs::path& file) {
     try {
       read_netpbm(file);
@@ -155,7 +155,7 @@ TEST(WeavePattern, InvalidPatternsAreOptionErrors) {
   }
 }
 
-TEST_F(Scratch, JacquardImageReadsUprightWithDarkWarpOver) {
+TEST_F(NetpbmFiles, JacquardImageReadsUprightWithDarkWarpOver) {
   // Image rows top to bottom; weft 0 is the bottom row.
   const fs::path file = write("design.pbm", "P1 3 2\n1 0 0\n0 1 1\n");
   const WeavePattern p = parse_weave_pattern(file.string());
