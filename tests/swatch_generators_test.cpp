@@ -25,6 +25,7 @@
 
 #include "error.h"
 #include "mesh/mesh_io.h"
+#include "mesh/swatch_frame.h"
 #include "swatch/chainmail.h"
 #include "swatch/fruit.h"
 #include "swatch/heightfield.h"
@@ -227,6 +228,12 @@ void check_swatch(const TriMesh& m, const Design& design, const std::string& nam
     }
   }
   EXPECT_EQ(intersecting_pairs(m), 0);
+  // The quilting's swatch loader accepts it as it is: no turn, only a shift to the origin.
+  const TriMesh framed = orient_swatch(m, name);
+  ASSERT_EQ(framed.positions.size(), m.positions.size());
+  for (size_t v = 0; v < m.positions.size(); v += 97) {
+    EXPECT_NEAR(glm::length(framed.positions[v] - (m.positions[v] - box.lo)), 0.0, 1e-9 * glm::length(e));
+  }
 }
 
 // Writes the swatch, reads it back with our reader and with OpenMesh, and compares.
