@@ -59,6 +59,7 @@ struct QueryState {
   const std::function<double(const ClosestPoint&)>* cost = nullptr;
   const std::function<double(double)>* radius_for = nullptr;
   // Box queries.
+  const std::vector<Box>* boxes = nullptr;
   Box box;
   std::vector<int32_t>* faces = nullptr;
 };
@@ -112,13 +113,13 @@ bool min_cost_callback(RTCPointQueryFunctionArguments* args) {
 bool box_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<QueryState*>(args->userPtr);
   const auto f = static_cast<int32_t>(args->primID);
-  if (boxes_overlap(face_box(*q->mesh, f), q->box)) q->faces->push_back(f);
+  if (boxes_overlap((*q->boxes)[f], q->box)) q->faces->push_back(f);
   return false;
 }
 
 void bounds_callback(const RTCBoundsFunctionArguments* args) {
-  const auto* mesh = static_cast<const TriMesh*>(args->geometryUserPtr);
-  const Box b = face_box(*mesh, static_cast<int32_t>(args->primID));
+  const auto* boxes = static_cast<const std::vector<Box>*>(args->geometryUserPtr);
+  const Box& b = (*boxes)[args->primID];
   RTCBounds* o = args->bounds_o;
   o->lower_x = round_down(b.lo.x);
   o->lower_y = round_down(b.lo.y);
@@ -136,6 +137,7 @@ void unused_occluded(const RTCOccludedFunctionNArguments*) {}
 }  // namespace
 
 struct FaceBvh::Impl {
+  std::vector<Box> boxes;  // per face, double precision
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   double slack = 0.0;
@@ -247,7 +249,9 @@ FaceBvh::FaceBvh(const TriMesh& mesh, BvhQuality quality) : mesh_(mesh), impl_(s
   rtcSetSceneBuildQuality(impl_->scene, quality == BvhQuality::low ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
   RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_USER);
   rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(mesh.num_faces()));
-  rtcSetGeometryUserData(geometry, const_cast<TriMesh*>(&mesh));
+  impl_->boxes.resize(mesh.num_faces());
+  for (size_t f = 0; f < mesh.num_faces(); ++f) impl_->boxes[f] = face_box(mesh, static_cast<int32_t>(f));
+  rtcSetGeometryUserData(geometry, &impl_->boxes);
   rtcSetGeometryBoundsFunction(geometry, &bounds_callback, nullptr);
   rtcSetGeometryIntersectFunction(geometry, &unused_intersect);
   rtcSetGeometryOccludedFunction(geometry, &unused_occluded);
@@ -310,6 +314,7 @@ void FaceBvh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>&
   QueryState q;
   q.mesh = &mesh_;
   q.box = {lo, hi};
+  q.boxes = &impl_->boxes;
   q.faces = &faces;
   // The sphere around the box contains it, so every face box overlapping the box is visited;
   // the callback keeps only the exact overlaps.
@@ -329,7 +334,7 @@ void FaceBvh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>&
 
 namespace {
 struct CollideState {
-  const TriMesh* mesh;
+  const std::vector<Box>* boxes;
   const std::function<void(int32_t, int32_t)>* visit;
 };
 
@@ -340,14 +345,14 @@ void collide_callback(void* user, RTCCollision* collisions, unsigned count) {
     const auto g = static_cast<int32_t>(collisions[i].primID1);
     // Embree reports each unordered leaf-level candidate in both orders; keep one and test the
     // exact double boxes.
-    if (f < g && boxes_overlap(face_box(*s->mesh, f), face_box(*s->mesh, g))) (*s->visit)(f, g);
+    if (f < g && boxes_overlap((*s->boxes)[f], (*s->boxes)[g])) (*s->visit)(f, g);
   }
 }
 }  // namespace
 
 void FaceBvh::for_each_overlapping_pair(const std::function<void(int32_t, int32_t)>& visit) const {
   if (mesh_.num_faces() < 2) return;
-  CollideState state{&mesh_, &visit};
+  CollideState state{&impl_->boxes, &visit};
   rtcCollide(impl_->scene, impl_->scene, &collide_callback, &state);
   impl_->check("collision");
 }
