@@ -167,8 +167,11 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   // claims them.
   std::vector<uint8_t> uncovered_out(co.num_faces());
   for (size_t f = 0; f < co.num_faces(); ++f) uncovered_out[f] = bvh_in.closest_point(centroid(co, f)).distance > cover;
-  const std::vector<uint8_t> keep_zone_out =
-      grow(co, nb_out, reaching_outside(co, nb_out, uncovered_out, inside_out), options.frontier_factor * cover);
+  // Its reach adds two seam margins, so that the input extends past the output's seam far enough
+  // to be cut there itself.
+  const double margin = options.seam_margin_factor * edge;
+  const std::vector<uint8_t> keep_zone_out = grow(co, nb_out, reaching_outside(co, nb_out, uncovered_out, inside_out),
+                                                  options.frontier_factor * cover + 2.0 * margin);
 
   CutGraph g_out = dual_graph(co, nb_out, dist_out);
   for (size_t f = 0; f < co.num_faces(); ++f)
@@ -217,7 +220,6 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   // output faces are deleted, those nearest deleted output faces are kept, and only a margin
   // around the output's cut loops is left to the minimum cut, whose Eq. 7 weights measure the
   // distance to those loops, so both seams run side by side.
-  const double margin = options.seam_margin_factor * edge;
   std::vector<double> dist_in(ci.num_vertices());
   for (size_t v = 0; v < ci.num_vertices(); ++v)
     dist_in[v] = seam.empty() ? bvh_out.closest_point(ci.positions[v]).distance : distance_to_segments(ci.positions[v], seam);

@@ -174,22 +174,29 @@ StitchResult refuse(std::string why) {
 }  // namespace
 
 std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh) {
-  std::unordered_map<uint64_t, std::array<int32_t, 3>> edges;  // {count, face, face}
-  edges.reserve(mesh.num_faces() * 2);
+  // Sorting (edge, face-slot) records groups each edge's faces without a hash map.
+  struct Use {
+    uint64_t key;
+    int32_t face, slot;
+  };
+  std::vector<Use> uses;
+  uses.reserve(mesh.num_faces() * 3);
   for (size_t f = 0; f < mesh.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      auto& e = edges.try_emplace(undirected_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]),
-                                  std::array<int32_t, 3>{0, -1, -1})
-                    .first->second;
-      if (e[0] < 2) e[1 + e[0]] = static_cast<int32_t>(f);
-      ++e[0];
+    for (int k = 0; k < 3; ++k)
+      uses.push_back({undirected_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]), static_cast<int32_t>(f), k});
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) { return x.key < y.key; });
+  std::vector<std::array<int32_t, 3>> nb(mesh.num_faces(), {-1, -1, -1});
+  for (size_t i = 0; i < uses.size();) {
+    size_t j = i;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    if (j - i == 2) {
+      nb[uses[i].face][uses[i].slot] = uses[i + 1].face;
+      nb[uses[i + 1].face][uses[i + 1].slot] = uses[i].face;
+    } else if (j - i > 2) {
+      for (size_t k = i; k < j; ++k) nb[uses[k].face][uses[k].slot] = -2;
     }
-  std::vector<std::array<int32_t, 3>> nb(mesh.num_faces());
-  for (size_t f = 0; f < mesh.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const auto& e = edges.at(undirected_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]));
-      nb[f][k] = e[0] == 1 ? -1 : e[0] > 2 ? -2 : (e[1] == static_cast<int32_t>(f) ? e[2] : e[1]);
-    }
+    i = j;
+  }
   return nb;
 }
 
@@ -298,26 +305,43 @@ int32_t tidy_cut(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>&
 
 SurfaceReport inspect_surface(const TriMesh& mesh) {
   SurfaceReport r;
-  std::unordered_map<uint64_t, int32_t> directed;
-  std::unordered_map<uint64_t, int32_t> undirected;
+  std::vector<uint64_t> directed;
+  directed.reserve(mesh.num_faces() * 3);
   for (const Tri& t : mesh.triangles) {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ++r.degenerate_faces;
-    for (int k = 0; k < 3; ++k) {
-      ++directed[edge_key(t[k], t[(k + 1) % 3])];
-      ++undirected[undirected_key(t[k], t[(k + 1) % 3])];
-    }
+    for (int k = 0; k < 3; ++k) directed.push_back(edge_key(t[k], t[(k + 1) % 3]));
   }
-  for (const auto& [key, count] : undirected) {
-    const auto a = static_cast<int32_t>(key >> 32), b = static_cast<int32_t>(key & 0xffffffffu);
-    if (count == 1) ++r.boundary_edges;
-    else if (count > 2) ++r.nonmanifold_edges;
-    else if (directed[edge_key(a, b)] != 1) ++r.misoriented_edges;
+  std::sort(directed.begin(), directed.end());
+  auto count_directed = [&](uint64_t key) {
+    const auto range = std::equal_range(directed.begin(), directed.end(), key);
+    return static_cast<int64_t>(range.second - range.first);
+  };
+  int64_t edges = 0;
+  for (size_t i = 0; i < directed.size();) {
+    size_t j = i;
+    while (j < directed.size() && directed[j] == directed[i]) ++j;
+    const auto a = static_cast<int32_t>(directed[i] >> 32), b = static_cast<int32_t>(directed[i] & 0xffffffffu);
+    const int64_t forward = static_cast<int64_t>(j - i), backward = a == b ? 0 : count_directed(edge_key(b, a));
+    // Each undirected edge is counted once, from its smaller-first direction or, when only the
+    // larger-first direction exists, from that one.
+    if (a < b || backward == 0) {
+      ++edges;
+      const int64_t uses = forward + backward;
+      if (uses == 1) ++r.boundary_edges;
+      else if (uses > 2) ++r.nonmanifold_edges;
+      else if (forward != 1 || backward != 1) ++r.misoriented_edges;
+    }
+    i = j;
   }
   // Fans: faces around a vertex joined when they share an edge at that vertex.
   const size_t V = mesh.num_vertices();
-  std::vector<std::vector<int32_t>> around(V);
+  std::vector<int32_t> first(V + 1, 0), around(mesh.num_faces() * 3);
+  for (const Tri& t : mesh.triangles)
+    for (int32_t v : t) ++first[v + 1];
+  for (size_t v = 0; v < V; ++v) first[v + 1] += first[v];
+  std::vector<int32_t> fill(first.begin(), first.end() - 1);
   for (size_t f = 0; f < mesh.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) around[mesh.triangles[f][k]].push_back(static_cast<int32_t>(f));
+    for (int32_t v : mesh.triangles[f]) around[fill[v]++] = static_cast<int32_t>(f);
   std::vector<int32_t> parent(V);
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int32_t x) {
@@ -325,25 +349,27 @@ SurfaceReport inspect_surface(const TriMesh& mesh) {
     return x;
   };
   int64_t used = 0;
+  std::vector<int32_t> fan;
   for (size_t v = 0; v < V; ++v) {
-    const auto& fs = around[v];
-    if (fs.empty()) continue;
+    const int32_t n = first[v + 1] - first[v];
+    if (n == 0) continue;
     ++used;
-    std::vector<int32_t> fan(fs.size());
+    const int32_t* fs = &around[first[v]];
+    fan.resize(n);
     std::iota(fan.begin(), fan.end(), 0);
     auto ffind = [&](int32_t x) {
       while (fan[x] != x) x = fan[x] = fan[fan[x]];
       return x;
     };
-    for (size_t i = 0; i < fs.size(); ++i)
-      for (size_t j = i + 1; j < fs.size(); ++j) {
+    for (int32_t i = 0; i < n; ++i)
+      for (int32_t j = i + 1; j < n; ++j) {
         int shared = 0;
         for (int a = 0; a < 3; ++a)
           for (int b = 0; b < 3; ++b) shared += mesh.triangles[fs[i]][a] == mesh.triangles[fs[j]][b];
-        if (shared >= 2) fan[ffind(static_cast<int32_t>(i))] = ffind(static_cast<int32_t>(j));
+        if (shared >= 2) fan[ffind(i)] = ffind(j);
       }
     int fans = 0;
-    for (size_t i = 0; i < fs.size(); ++i) fans += ffind(static_cast<int32_t>(i)) == static_cast<int32_t>(i);
+    for (int32_t i = 0; i < n; ++i) fans += ffind(i) == i;
     if (fans > 1) ++r.pinched_vertices;
   }
   for (const Tri& t : mesh.triangles) {
@@ -351,8 +377,8 @@ SurfaceReport inspect_surface(const TriMesh& mesh) {
     parent[find(t[1])] = find(t[2]);
   }
   for (size_t v = 0; v < V; ++v)
-    if (!around[v].empty() && find(static_cast<int32_t>(v)) == static_cast<int32_t>(v)) ++r.components;
-  r.euler = used - static_cast<int64_t>(undirected.size()) + static_cast<int64_t>(mesh.num_faces());
+    if (first[v + 1] > first[v] && find(static_cast<int32_t>(v)) == static_cast<int32_t>(v)) ++r.components;
+  r.euler = used - edges + static_cast<int64_t>(mesh.num_faces());
   return r;
 }
 
@@ -479,7 +505,7 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
 
   // Eq. 5 with the loop vertices pulled to the averaged seam points; far vertices anchored.
   std::vector<VertexConstraint> ca, cb;
-  std::vector<Vec3> seam_a_pts, seam_b_pts;
+  std::vector<Vec3> seam_a_pts;
   for (const PairPlan& plan : plans)
     for (const SeamEvent& e : plan.alignment.events) {
       Vec3 on_a, on_b;
@@ -489,21 +515,49 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
       if (e.kind != SeamEvent::p_alone) cb.push_back({plan.qv[e.q], target});
       seam_a_pts.push_back(target);
     }
-  auto add_anchors = [&](const TriMesh& part, std::vector<VertexConstraint>& cons) {
-    if (options.anchor_factor <= 0.0) return;
-    const double reach = options.anchor_factor * edge;
-    for (size_t v = 0; v < part.num_vertices(); ++v) {
-      double d = std::numeric_limits<double>::infinity();
-      for (const Vec3& s : seam_a_pts) d = std::min(d, glm::length(part.positions[v] - s));
-      if (d > reach) cons.push_back({static_cast<int32_t>(v), part.positions[v]});
-    }
-  };
-  add_anchors(pa, ca);
-  add_anchors(pb, cb);
   DeformationOptions deform;
   deform.mu = options.mu;
-  const std::vector<Vec3> xa = deform_with_vertex_constraints(pa, ca, deform);
-  const std::vector<Vec3> xb = deform_with_vertex_constraints(pb, cb, deform);
+  // Vertices beyond the anchor reach stay where they are, so only the band of faces touching a
+  // vertex within reach is solved (its outer vertices anchored): the system stays a few rings
+  // wide however large the element.
+  auto deform_near_seam = [&](const TriMesh& part, const std::vector<VertexConstraint>& seam_cons) {
+    if (options.anchor_factor <= 0.0) return deform_with_vertex_constraints(part, seam_cons, deform);
+    const double reach = options.anchor_factor * edge;
+    std::vector<uint8_t> free(part.num_vertices(), 0);
+    for (size_t v = 0; v < part.num_vertices(); ++v)
+      for (const Vec3& s : seam_a_pts)
+        if (glm::length(part.positions[v] - s) <= reach) {
+          free[v] = 1;
+          break;
+        }
+    TriMesh band;
+    std::vector<int32_t> local(part.num_vertices(), -1), global;
+    for (const Tri& t : part.triangles) {
+      if (!free[t[0]] && !free[t[1]] && !free[t[2]]) continue;
+      Tri u;
+      for (int k = 0; k < 3; ++k) {
+        if (local[t[k]] < 0) {
+          local[t[k]] = static_cast<int32_t>(global.size());
+          global.push_back(t[k]);
+          band.positions.push_back(part.positions[t[k]]);
+        }
+        u[k] = local[t[k]];
+      }
+      band.triangles.push_back(u);
+    }
+    std::vector<VertexConstraint> cons;
+    for (const VertexConstraint& c : seam_cons)
+      if (local[c.vertex] >= 0) cons.push_back({local[c.vertex], c.target});
+    for (size_t l = 0; l < global.size(); ++l)
+      if (!free[global[l]]) cons.push_back({static_cast<int32_t>(l), part.positions[global[l]]});
+    const std::vector<Vec3> moved = deform_with_vertex_constraints(band, cons, deform);
+    std::vector<Vec3> x = part.positions;
+    for (size_t l = 0; l < global.size(); ++l)
+      if (free[global[l]]) x[global[l]] = moved[l];
+    return x;
+  };
+  const std::vector<Vec3> xa = deform_near_seam(pa, ca);
+  const std::vector<Vec3> xb = deform_near_seam(pb, cb);
 
   // Assemble: part a's vertices, then part b's; a welded Q vertex becomes its P partner.
   const int32_t Va = static_cast<int32_t>(pa.num_vertices());
@@ -647,18 +701,43 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
       box[f][0] = glm::min(glm::min(tri[f][0], tri[f][1]), tri[f][2]);
       box[f][1] = glm::max(glm::max(tri[f][0], tri[f][1]), tri[f][2]);
     }
+    // Candidates through a hash grid of face boxes (cells of about two edge lengths), so only
+    // faces near the seam are tested.
+    const double cell = std::max(2.0 * edge, 1e-12);
+    auto cell_of = [&](double x) { return static_cast<int64_t>(std::floor(x / cell)); };
+    auto cell_key = [](int64_t i, int64_t j, int64_t k) {
+      return static_cast<uint64_t>((i * 73856093) ^ (j * 19349663) ^ (k * 83492791));
+    };
+    std::unordered_map<uint64_t, std::vector<int32_t>> grid;
+    for (size_t f = 0; f < result.num_faces(); ++f)
+      for (int64_t i = cell_of(box[f][0].x); i <= cell_of(box[f][1].x); ++i)
+        for (int64_t j = cell_of(box[f][0].y); j <= cell_of(box[f][1].y); ++j)
+          for (int64_t k = cell_of(box[f][0].z); k <= cell_of(box[f][1].z); ++k)
+            grid[cell_key(i, j, k)].push_back(static_cast<int32_t>(f));
+    std::vector<int32_t> stamp(result.num_faces(), -1);
     for (size_t f = 0; f < result.num_faces(); ++f) {
       const Tri& t = result.triangles[f];
       if (!on_seam[t[0]] && !on_seam[t[1]] && !on_seam[t[2]]) continue;
-      for (size_t g = 0; g < result.num_faces(); ++g) {
-        if (g == f) continue;
-        if (glm::any(glm::lessThan(box[g][1], box[f][0])) || glm::any(glm::greaterThan(box[g][0], box[f][1]))) continue;
-        const Tri& u = result.triangles[g];
-        bool shares = false;
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) shares = shares || t[i] == u[j];
-        if (!shares && triangles_cross(tri[f], tri[g])) return refuse("a seam face intersects another face");
-      }
+      for (int64_t i = cell_of(box[f][0].x); i <= cell_of(box[f][1].x); ++i)
+        for (int64_t j = cell_of(box[f][0].y); j <= cell_of(box[f][1].y); ++j)
+          for (int64_t k = cell_of(box[f][0].z); k <= cell_of(box[f][1].z); ++k) {
+            const auto it = grid.find(cell_key(i, j, k));
+            if (it == grid.end()) continue;
+            for (int32_t g : it->second) {
+              if (g == static_cast<int32_t>(f) || stamp[g] == static_cast<int32_t>(f)) continue;
+              stamp[g] = static_cast<int32_t>(f);
+              const auto& bg = box[g];
+              const auto& bf = box[f];
+              if (bg[1].x < bf[0].x || bg[1].y < bf[0].y || bg[1].z < bf[0].z || bg[0].x > bf[1].x ||
+                  bg[0].y > bf[1].y || bg[0].z > bf[1].z)
+                continue;
+              const Tri& u = result.triangles[g];
+              bool shares = false;
+              for (int a = 0; a < 3; ++a)
+                for (int b2 = 0; b2 < 3; ++b2) shares = shares || t[a] == u[b2];
+              if (!shares && triangles_cross(tri[f], tri[g])) return refuse("a seam face intersects another face");
+            }
+          }
     }
   }
   StitchResult ok;
