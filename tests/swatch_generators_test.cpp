@@ -258,7 +258,9 @@ void check_round_trip(const TriMesh& m, const std::string& name) {
     EXPECT_EQ(reference.n_vertices(), m.positions.size()) << file;
     size_t boundary = 0;
     for (auto edge : reference.edges()) boundary += reference.is_boundary(edge);
-    if (name.find("open") == std::string::npos) EXPECT_EQ(boundary, 0u) << file;
+    if (name.find("open") == std::string::npos) {
+      EXPECT_EQ(boundary, 0u) << file;
+    }
   }
   fs::remove_all(dir);
 }
@@ -351,7 +353,9 @@ void check_chainmail_links(const TriMesh& m, const ChainmailOptions& o) {
         }
       }
       const bool interior = r > 0 && r + 1 < o.rows && c > 0 && c + 1 < o.columns;
-      if (interior) EXPECT_EQ(degree, 4) << "interior ring (" << c << "," << r << ")";
+      if (interior) {
+        EXPECT_EQ(degree, 4) << "interior ring (" << c << "," << r << ")";
+      }
     }
   }
   EXPECT_EQ(found, expected);
