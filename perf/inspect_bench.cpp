@@ -2,7 +2,10 @@
 // 1,000,000-face mesh of 2,000 rings of 500 faces: half the rows are chains of linked rings,
 // half are loose rings. Prints each run, the median, and the median time per stage.
 //
-//   inspect_bench [--runs N] [--base]     (--base also times base coverage and heights)
+//   inspect_bench [--runs N] [--base] [--write PREFIX]
+//     --base    also times base coverage and heights over a plane under the rings
+//     --write   also writes PREFIX_mesh.ply and PREFIX_swatch.ply, to time `meshquilt inspect`
+//               end to end (file reading included)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +19,7 @@
 #include <glm/geometric.hpp>
 
 #include "inspect/inspect_report.h"
+#include "mesh/mesh_io.h"
 
 namespace {
 
@@ -69,9 +73,11 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   int runs = 3;
   bool with_base = false;
+  std::string write_prefix;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--runs") && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--base")) with_base = true;
+    else if (!std::strcmp(argv[i], "--write") && i + 1 < argc) write_prefix = argv[++i];
   }
   const TriMesh mesh = ring_field(40, 50);
   const TriMesh swatch = ring_field(2, 4);
@@ -79,6 +85,11 @@ int main(int argc, char** argv) {
   base.positions = {{-3, -3, -0.5}, {120, -3, -0.5}, {120, 105, -0.5}, {-3, 105, -0.5}};
   base.triangles = {{0, 1, 2}, {0, 2, 3}};
   std::printf("mesh: %zu faces, %zu vertices; swatch: %zu faces\n", mesh.num_faces(), mesh.num_vertices(), swatch.num_faces());
+  if (!write_prefix.empty()) {
+    meshquilt::write_mesh(mesh, write_prefix + "_mesh.ply");
+    meshquilt::write_mesh(swatch, write_prefix + "_swatch.ply");
+    std::printf("wrote %s_mesh.ply and %s_swatch.ply\n", write_prefix.c_str(), write_prefix.c_str());
+  }
 
   auto bench = [&](const char* name, const meshquilt::InspectOptions& options, const TriMesh* b) {
     std::vector<double> totals;

@@ -64,6 +64,9 @@ TEST(KsDistance, ExactValues) {
   // at x = 1 and 1/4 at x = 2 (F_a = 1, F_b = 3/4).
   EXPECT_DOUBLE_EQ(ks_distance({1, 2}, {1, 2, 2, 3}), 0.25);
   EXPECT_TRUE(std::isnan(ks_distance({}, {1.0})));
+  // Rounding noise is a tie, not a difference; a real difference is not.
+  EXPECT_DOUBLE_EQ(ks_distance({1.0, 2.0}, {1.0 + 1e-14, 2.0 - 1e-14}), 0.0);
+  EXPECT_DOUBLE_EQ(ks_distance({1.0, 2.0}, {1.0 + 1e-6, 2.0 + 1e-6}), 0.5);
 }
 
 TEST(ElementMeasures, SquareAndRing) {
@@ -75,6 +78,16 @@ TEST(ElementMeasures, SquareAndRing) {
   EXPECT_DOUBLE_EQ(e.xy_extent[0], 2.0);
   EXPECT_DOUBLE_EQ(median({3.0, 1.0, 2.0}), 2.0);
   EXPECT_DOUBLE_EQ(median({4.0, 1.0, 2.0, 3.0}), 2.5);
+}
+
+TEST(Inspect, SwatchKsIsZeroForTheSameRingsElsewhere) {
+  // The same rings at other positions: areas equal up to rounding, so the distance is 0.
+  TriMesh swatch, out;
+  for (int i = 0; i < 3; ++i) add_ring(swatch, {3.0 * i, 0, 0}, 0.5, 0.1);
+  for (int i = 0; i < 40; ++i) add_ring(out, {3.0 * (i % 8) + 0.1 * i, 3.7 * (i / 8), 0.3}, 0.5, 0.1);
+  const InspectReport r = inspect_mesh(out, {}, &swatch);
+  EXPECT_DOUBLE_EQ(r.swatch->element_area_ks, 0.0);
+  EXPECT_DOUBLE_EQ(r.swatch->element_extent_ks, 0.0);
 }
 
 TEST(Inspect, SwatchKsIsZeroAgainstItselfAndOneAgainstBiggerElements) {
@@ -240,7 +253,9 @@ TEST(SignedHeights, MatchBruteForceAroundAClosedConvexMesh) {
       }
     }
     EXPECT_NEAR(std::abs(h[i]), best / diagonal, 1e-12);
-    if (best > 1e-9 * diagonal) EXPECT_EQ(h[i] < 0, inside) << i;
+    if (best > 1e-9 * diagonal) {
+      EXPECT_EQ(h[i] < 0, inside) << i;
+    }
   }
 }
 

@@ -32,8 +32,16 @@ ElementMeasures element_measures(const TriMesh& mesh, const std::vector<int32_t>
   return out;
 }
 
-double ks_distance(std::vector<double> a, std::vector<double> b) {
+double ks_distance(std::vector<double> a, std::vector<double> b, double tie_tolerance) {
   if (a.empty() || b.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double largest = 0.0;
+  for (double x : a) largest = std::max(largest, std::abs(x));
+  for (double x : b) largest = std::max(largest, std::abs(x));
+  const double step = tie_tolerance * largest;
+  if (step > 0.0) {
+    for (double& x : a) x = std::round(x / step) * step;
+    for (double& x : b) x = std::round(x / step) * step;
+  }
   std::sort(a.begin(), a.end());
   std::sort(b.begin(), b.end());
   const double na = static_cast<double>(a.size()), nb = static_cast<double>(b.size());

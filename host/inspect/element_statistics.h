@@ -20,8 +20,10 @@ struct ElementMeasures {
 ElementMeasures element_measures(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements);
 
 //! Two-sample Kolmogorov-Smirnov statistic sup_x |F_a(x) - F_b(x)| of the empirical CDFs, in
-//! [0, 1]. Returns NaN when either sample is empty.
-double ks_distance(std::vector<double> a, std::vector<double> b);
+//! [0, 1]. Values closer than `tie_tolerance` x the largest magnitude in either sample count as
+//! ties (they are rounded to that step first), so copies of one element whose areas differ only
+//! by floating-point rounding do not look like different distributions. NaN when a sample is empty.
+double ks_distance(std::vector<double> a, std::vector<double> b, double tie_tolerance = 1e-9);
 
 //! Median of the values (mean of the middle two for an even count); NaN when empty.
 double median(std::vector<double> values);
