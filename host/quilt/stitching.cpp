@@ -108,12 +108,12 @@ Alignment align_loops(const std::vector<Vec3>& P, const std::vector<Vec3>& Q, do
   const int32_t W = n + 1;
   std::vector<double> cost(static_cast<size_t>(m + 1) * W, inf);
   std::vector<uint8_t> from(static_cast<size_t>(m + 1) * W, 0);
-  // A point landing near an end of the other edge would create a sliver; it pays a penalty so
-  // that welding to that end wins, and a refused split remains possible only as a last resort.
+  // A point landing near an end of the other edge would create a sliver, so the split stays
+  // within [min_split, 1 - min_split] of the edge and pays for the distance to that point.
   auto alone_cost = [&](const Vec3& x, const Vec3& a, const Vec3& b, double* lambda) {
-    const double d = point_segment(x, a, b, lambda);
-    const double penalty = (*lambda < min_split || *lambda > 1.0 - min_split) ? 10.0 * glm::length(b - a) + 1.0 : 0.0;
-    return d + penalty;
+    point_segment(x, a, b, lambda);
+    *lambda = std::clamp(*lambda, min_split, 1.0 - min_split);
+    return glm::length(x - glm::mix(a, b, *lambda));
   };
   cost[1 * W + 1] = glm::length(P[0] - Q[0]);
   for (int32_t i = 1; i <= m; ++i) {
@@ -148,12 +148,12 @@ Alignment align_loops(const std::vector<Vec3>& P, const std::vector<Vec3>& Q, do
       case 1: e.kind = SeamEvent::pair, e.p = i - 1, e.q = j - 1, --i, --j; break;
       case 2:
         e.kind = SeamEvent::p_alone, e.p = i - 1, e.seg0 = j - 1, e.seg1 = j % n;
-        point_segment(P[i - 1], Q[j - 1], Q[j % n], &e.lambda);
+        alone_cost(P[i - 1], Q[j - 1], Q[j % n], &e.lambda);
         --i;
         break;
       case 3:
         e.kind = SeamEvent::q_alone, e.q = j - 1, e.seg0 = i - 1, e.seg1 = i % m;
-        point_segment(Q[j - 1], P[i - 1], P[i % m], &e.lambda);
+        alone_cost(Q[j - 1], P[i - 1], P[i % m], &e.lambda);
         --j;
         break;
       default: out.cost = inf; return out;
@@ -162,6 +162,18 @@ Alignment align_loops(const std::vector<Vec3>& P, const std::vector<Vec3>& Q, do
   }
   out.events.push_back(SeamEvent{SeamEvent::pair, 0, 0, -1, -1, 0.0});
   std::reverse(out.events.begin(), out.events.end());
+  // Points splitting the same edge form a run in seam order; their split parameters must rise
+  // by at least min_split, or they are spread evenly along the edge.
+  for (size_t r = 0; r < out.events.size();) {
+    size_t s = r + 1;
+    if (out.events[r].kind != SeamEvent::pair)
+      while (s < out.events.size() && out.events[s].kind == out.events[r].kind && out.events[s].seg0 == out.events[r].seg0) ++s;
+    bool spaced = true;
+    for (size_t t = r + 1; t < s; ++t) spaced = spaced && out.events[t].lambda - out.events[t - 1].lambda >= min_split;
+    if (!spaced)
+      for (size_t t = r; t < s; ++t) out.events[t].lambda = static_cast<double>(t - r + 1) / static_cast<double>(s - r + 1);
+    r = s;
+  }
   return out;
 }
 
