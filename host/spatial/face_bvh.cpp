@@ -143,6 +143,7 @@ struct FaceBvh::Impl {
   double slack = 0.0;
   // Embree reports errors through a C callback; the first one is kept and thrown after the call.
   std::mutex error_mutex;
+  std::atomic<bool> has_error{false};  // lets queries skip the lock when all is well
   RTCError error_code = RTC_ERROR_NONE;
   std::string error_message;
 
@@ -152,16 +153,19 @@ struct FaceBvh::Impl {
     if (self->error_code == RTC_ERROR_NONE) {
       self->error_code = code;
       self->error_message = message ? message : "";
+      self->has_error = true;
     }
   }
 
   void check(const char* what) {
+    if (!has_error.load(std::memory_order_acquire)) return;
     std::lock_guard<std::mutex> lock(error_mutex);
     if (error_code == RTC_ERROR_NONE) return;
     const std::string message = std::string("Embree ") + what + ": " + error_message + " (code " +
                                 std::to_string(static_cast<int>(error_code)) + ")";
     const RTCError code = error_code;
     error_code = RTC_ERROR_NONE;
+    has_error = false;
     if (code == RTC_ERROR_UNSUPPORTED_CPU || code == RTC_ERROR_OUT_OF_MEMORY) throw DeviceError(message);
     throw SolverError(message);
   }

@@ -30,8 +30,11 @@ enum class BvhQuality { low, medium };
 
 //! A BVH over a mesh's faces. The mesh must outlive the BVH and not change. Queries are exact in
 //! double precision (Embree's float BVH only prunes, with a conservative margin) and may run
-//! concurrently from several threads. Construction throws DeviceError when Embree cannot start
-//! (unsupported CPU, out of memory) and SolverError for any other Embree error.
+//! concurrently from several threads. Faces are an Embree user geometry whose boxes come from
+//! the double positions rounded outward, so Embree holds no float copy of the vertices (and no
+//! padded vertex buffer is needed). Ties between equally close faces go to the lower index.
+//! Construction throws DeviceError when Embree cannot start (unsupported CPU, out of memory) and
+//! SolverError for any other Embree error.
 class FaceBvh {
  public:
   explicit FaceBvh(const TriMesh& mesh, BvhQuality quality = BvhQuality::medium);
