@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <mutex>
 #include <random>
+#include <thread>
 
 #include "mesh/mesh_io.h"
 #include "spatial/face_bvh.h"
@@ -155,6 +156,40 @@ TEST_P(RealMesh, FacesInBoxMatchBruteForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, RealMesh, ::testing::Values("sphere.off", "cylinder.off", "head.off"));
+
+TEST(FaceBvh, ExactFarFromTheOriginAndFromManyThreads) {
+  // A small bumpy sheet 1e6 away from the origin: float rounding of coordinates (about 0.06)
+  // is far larger than the features (0.01), so only the double tests can decide.
+  TriMesh mesh;
+  const int n = 40;
+  const Vec3 offset(1e6, -2e6, 5e5);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) mesh.positions.push_back(offset + Vec3(0.01 * i, 0.01 * j, 0.003 * std::sin(i * 1.3 + j * 0.7)));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int32_t a = j * (n + 1) + i;
+      mesh.triangles.push_back({a, a + 1, a + n + 2});
+      mesh.triangles.push_back({a, a + n + 2, a + n + 1});
+    }
+  const FaceBvh bvh(mesh);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-0.05, 0.45);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 300; ++i) points.push_back(offset + Vec3(u(rng), u(rng), 0.1 * u(rng)));
+  std::vector<double> expected(points.size(), std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < points.size(); ++i)
+    for (const Tri& t : mesh.triangles)
+      expected[i] = std::min(expected[i], reference_distance(points[i], mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+  std::vector<double> got(points.size());
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 4; ++k) {
+    threads.emplace_back([&, k] {
+      for (size_t i = k; i < points.size(); i += 4) got[i] = bvh.closest_point(points[i]).distance;
+    });
+  }
+  for (auto& t : threads) t.join();
+  for (size_t i = 0; i < points.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-9) << i;
+}
 
 TEST(FaceBvh, EmptyMeshFindsNothing) {
   const TriMesh empty;
