@@ -1,6 +1,7 @@
 #include "inspect/coverage.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -75,7 +76,7 @@ PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneC
   out.cell_size = cell_size;
   const double cw = inner.x / out.cells_x, ch = inner.y / out.cells_y;
   const int64_t total = static_cast<int64_t>(out.cells_x) * out.cells_y;
-  std::vector<char> covered(total, 0);
+  std::vector<std::atomic<char>> marks(total);  // written concurrently by the face loop
 
   auto cell_range = [](double a, double b, double origin, double step, int32_t n) {
     // Closed cells: a value on a shared border touches both cells.
@@ -84,7 +85,7 @@ PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneC
     if (step > 0 && a - origin == double(i0) * step) --i0;
     return std::pair<int64_t, int64_t>(std::max<int64_t>(i0, 0), std::min<int64_t>(i1, n - 1));
   };
-  // Faces write only the value 1, so concurrent writes to one cell are harmless.
+  // Faces only ever set marks, so relaxed atomic stores suffice.
   tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.num_faces(), 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t f = r.begin(); f < r.end(); ++f) {
       const Tri& t = mesh.triangles[f];
@@ -95,17 +96,18 @@ PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneC
       const auto [iy0, iy1] = cell_range(tlo.y, thi.y, lo.y, ch, out.cells_y);
       for (int64_t iy = iy0; iy <= iy1; ++iy) {
         for (int64_t ix = ix0; ix <= ix1; ++ix) {
-          char& c = covered[iy * out.cells_x + ix];
-          if (c) continue;
+          std::atomic<char>& c = marks[iy * out.cells_x + ix];
+          if (c.load(std::memory_order_relaxed)) continue;
           const Box2 box{lo.x + ix * cw, lo.y + iy * ch, lo.x + (ix + 1) * cw, lo.y + (iy + 1) * ch};
-          if (triangle_overlaps_box(p, box)) c = 1;
+          if (triangle_overlaps_box(p, box)) c.store(1, std::memory_order_relaxed);
         }
       }
     }
   });
 
+  std::vector<char> covered(total);
   int64_t count = 0;
-  for (char c : covered) count += c;
+  for (int64_t i = 0; i < total; ++i) count += covered[i] = marks[i].load(std::memory_order_relaxed);
   out.coverage = static_cast<double>(count) / static_cast<double>(total);
 
   // Largest gap: flood fill of uncovered cells (4-connected).
