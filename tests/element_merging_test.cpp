@@ -195,5 +195,40 @@ TEST(ElementMerging, RandomRingPairsAlwaysYieldAClosedElement) {
   EXPECT_GE(stitched, trials * 3 / 4);
 }
 
+// Weave yarns: undulating tubes, larger misalignments, coarse and fine tessellations.
+TEST(ElementMerging, RandomYarnPairsAlwaysYieldAClosedElement) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int stitched = 0, trials = 16;
+  for (int trial = 0; trial < trials; ++trial) {
+    const double band = 0.5 + 0.3 * u(rng), amplitude = 0.3 * u(rng), wavelength = 1.5 + u(rng);
+    const double radius = 0.12 + 0.1 * u(rng);
+    const TriMesh out = test::swept_tube(test::yarn_centre(-2.0, band * 0.8, 24 + static_cast<int>(20 * u(rng)), amplitude, wavelength),
+                                         radius, 6 + static_cast<int>(12 * u(rng)), u(rng));
+    const Vec3 shift(0.0, 0.3 * radius * (u(rng) - 0.5), 0.3 * radius * (u(rng) - 0.5));
+    const TriMesh in = test::swept_tube(test::yarn_centre(-band * 0.8, 2.0, 24 + static_cast<int>(20 * u(rng)), amplitude, wavelength, shift),
+                                        radius, 6 + static_cast<int>(12 * u(rng)), u(rng));
+    ASSERT_GT(test::signed_volume(out), 0.0);
+    const auto overlap = [band](const Vec3& p) { return std::abs(p.x) < band; };
+    const MergeResult r = merge_elements(out, in, overlap);
+    SCOPED_TRACE("trial " + std::to_string(trial) + ": " + r.fallback);
+    if (r.outcome == MergeOutcome::stitched) {
+      ++stitched;
+      const test::Topology t = test::topology(r.element);
+      EXPECT_TRUE(t.every_edge_twice_opposite && t.vertex_links_are_cycles && t.no_repeated_index);
+      EXPECT_EQ(t.euler, 2);
+      EXPECT_EQ(t.components, 1);
+      EXPECT_EQ(test::crossing_pairs(r.element), 0);
+      EXPECT_GT(test::signed_volume(r.element), 0.0);
+    } else {
+      const TriMesh& whole = r.outcome == MergeOutcome::kept_in ? in : out;
+      EXPECT_EQ(r.element.triangles, whole.triangles);
+      std::printf("yarn trial %d fell back: %s\n", trial, r.fallback.c_str());
+    }
+  }
+  std::printf("random yarns: %d of %d stitched\n", stitched, trials);
+  EXPECT_GE(stitched, trials * 3 / 4);
+}
+
 }  // namespace
 }  // namespace meshquilt

@@ -46,6 +46,50 @@ inline TriMesh capped_tube(double x0, double x1, double radius, int rings, int s
   return m;
 }
 
+//! Closed capped tube swept along a centreline in the x-z plane (a weave yarn): circles in the
+//! plane spanned by y and the in-plane normal, outward orientation like capped_tube.
+inline TriMesh swept_tube(const std::vector<Vec3>& centre, double radius, int sides, double phase = 0.0) {
+  TriMesh m;
+  const int rings = static_cast<int>(centre.size());
+  for (int i = 0; i < rings; ++i) {
+    const Vec3 d = centre[std::min(i + 1, rings - 1)] - centre[std::max(i - 1, 0)];
+    const Vec3 t = d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    const Vec3 b(0.0, 1.0, 0.0);
+    const Vec3 n(b.y * t.z - b.z * t.y, b.z * t.x - b.x * t.z, b.x * t.y - b.y * t.x);  // b x t
+    for (int k = 0; k < sides; ++k) {
+      const double a = phase + 2.0 * M_PI * k / sides;
+      // At a = 0 the point is on -n ... matching capped_tube's turn from +y towards +z.
+      m.positions.push_back(centre[i] + radius * (std::cos(a) * b - std::sin(a) * n));
+    }
+  }
+  auto id = [&](int i, int k) { return static_cast<int32_t>(i * sides + (k % sides)); };
+  for (int i = 0; i + 1 < rings; ++i)
+    for (int k = 0; k < sides; ++k) {
+      m.triangles.push_back({id(i, k), id(i, k + 1), id(i + 1, k + 1)});
+      m.triangles.push_back({id(i, k), id(i + 1, k + 1), id(i + 1, k)});
+    }
+  const auto c0 = static_cast<int32_t>(m.positions.size());
+  m.positions.push_back(centre.front());
+  const auto c1 = static_cast<int32_t>(m.positions.size());
+  m.positions.push_back(centre.back());
+  for (int k = 0; k < sides; ++k) {
+    m.triangles.push_back({c0, id(0, k + 1), id(0, k)});
+    m.triangles.push_back({c1, id(rings - 1, k), id(rings - 1, k + 1)});
+  }
+  return m;
+}
+
+//! Centreline of an undulating yarn: x from x0 to x1, z = amplitude sin(2 pi x / wavelength).
+inline std::vector<Vec3> yarn_centre(double x0, double x1, int rings, double amplitude, double wavelength,
+                                     Vec3 offset = Vec3(0.0)) {
+  std::vector<Vec3> c;
+  for (int i = 0; i < rings; ++i) {
+    const double x = x0 + (x1 - x0) * i / (rings - 1);
+    c.push_back(offset + Vec3(x, 0.0, amplitude * std::sin(2.0 * M_PI * x / wavelength)));
+  }
+  return c;
+}
+
 //! Torus around the z axis (major radius R, minor r), outward orientation.
 inline TriMesh torus(double R, double r, int nu, int nv, double phase_u = 0.0, double phase_v = 0.0) {
   TriMesh m;
