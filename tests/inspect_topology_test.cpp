@@ -16,6 +16,8 @@
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
 #include "spatial/exact_predicates.h"
+#include "swatch/chainmail.h"
+#include "swatch/weave.h"
 
 namespace meshquilt {
 namespace {
@@ -318,6 +320,18 @@ TEST(Inspect, RealMeshesMatchBruteForce) {
     m = weld_vertices(m);  // drops the vertices no kept face uses
     expect_report_matches(m, brute_force(m));
   }
+}
+
+TEST(Inspect, GeneratedSwatchesMatchBruteForce) {
+  // The project's own swatches: chain mail rings are closed, linked and do not touch.
+  const TriMesh mail = weld_vertices(make_chainmail(ChainmailOptions::small()));
+  const Reference ref = brute_force(mail);
+  EXPECT_EQ(ref.elements, 6);
+  EXPECT_EQ(ref.closed, 6);
+  EXPECT_EQ(ref.between, 0);
+  expect_report_matches(mail, ref);
+  const TriMesh weave = weld_vertices(make_weave(WeaveOptions::small()));
+  expect_report_matches(weave, brute_force(weave));
 }
 
 TEST(ElementTopology, FaceElementsAreTheComponents) {
