@@ -192,6 +192,13 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
                                              const std::vector<glm::vec2>& translations) {
   if (points.size() != normals.size())
     invalid(std::to_string(points.size()) + " points but " + std::to_string(normals.size()) + " normals");
+  // A NaN would reach float-to-int conversions in the ring search.
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!finite(glm::dvec3(points[i])) || !finite(glm::dvec3(normals[i])))
+      invalid("point " + std::to_string(i) + " has a non-finite position or normal");
+  for (std::size_t c = 0; c < translations.size(); ++c)
+    if (!std::isfinite(translations[c].x) || !std::isfinite(translations[c].y))
+      invalid("translation " + std::to_string(c) + " is not finite");
   last_dispatches_ = 0;
   last_fallbacks_ = 0;
   last_timing_ = {};

@@ -54,7 +54,7 @@ struct MatchingCostOptions {
 //! Reuse one object for all seeds of a synthesis.
 class MatchingCost {
  public:
-  //! Builds the grid and uploads the swatch.
+  //! Builds the grid and uploads the swatch. `device` must outlive this object.
   //! \throw InputError (ExitCode::invalid_option) when the swatch has no faces, an index is out
   //! of range, a coordinate is not finite, cell_size is not positive and finite, or lambda is
   //! negative. \throw DeviceError when the device fails. Grids of more than 4 Mi cells use a
@@ -67,7 +67,8 @@ class MatchingCost {
   //! E(t) for each translation: #T costs in double. One dispatch scores every candidate when
   //! the pairs fit one binding. Empty points give zeros; empty translations an empty result.
   //! \pre points.size() == normals.size(); normals unit length.
-  //! \throw InputError when the sizes differ; DeviceError when the device fails.
+  //! \throw InputError when the sizes differ or a value is not finite; DeviceError when the
+  //! device fails.
   std::vector<double> score(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
                             const std::vector<glm::vec2>& translations);
 

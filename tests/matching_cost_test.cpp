@@ -383,6 +383,9 @@ TEST_P(MatchingCostTest, RejectsBadInput) {
   swatch.positions[1].x = 1.0f;
   MatchingCost cost(*device_, swatch);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {}, {{0, 0}}), InputError);
+  EXPECT_THROW(cost.score({{0, NAN, 0}}, {{0, 0, 1}}, {{0, 0}}), InputError);
+  EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, INFINITY}}, {{0, 0}}), InputError);
+  EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{NAN, 0}}), InputError);
   // A cell far smaller than the swatch is coarsened, not refused.
   swatch.cell_size = 1e-6f;
   MatchingCost fine(*device_, swatch);
