@@ -116,6 +116,8 @@ void run_synth(const SynthArgs& args) {
       {"yielded_inputs", stats.kept},
       {"rejected_inputs", stats.rejected_inputs},
       {"dropped_elements", stats.dropped_elements},
+      {"dropped_open", stats.dropped_open},
+      {"dropped_intersecting", stats.dropped_intersecting},
       {"cells", stats.cells},
       {"cell_size", stats.cell_size},
       {"stages", stats.stage_seconds},

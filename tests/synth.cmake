@@ -1,1 +1,3 @@
 meshquilt_test(synth_bad_input_test NEEDS_CLI SOURCES synth_bad_input_test.cpp)
+meshquilt_test(planar_quilting_test NEEDS_CLI SOURCES planar_quilting_test.cpp
+  LIBS meshquilt_quilt meshquilt_inspect meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_engine)

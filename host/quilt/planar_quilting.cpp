@@ -306,7 +306,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
       for (size_t i : alive) {
         if (swatch_closed && !is_closed_manifold(output[i].mesh)) {
           output[i].alive = false;
-          ++stats.dropped_elements;
+          ++stats.dropped_open;
         }
       }
       // Of two intersecting elements the smaller goes.
@@ -328,11 +328,12 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
         if (!a.alive || !b.alive) continue;
         OutputElement& smaller = a.mesh.num_faces() < b.mesh.num_faces() ? a : b;
         smaller.alive = false;
-        ++stats.dropped_elements;
+        ++stats.dropped_intersecting;
       }
     }
   }
 
+  stats.dropped_elements = stats.dropped_open + stats.dropped_intersecting;
   std::vector<TriMesh> kept;
   for (OutputElement& e : output)
     if (e.alive) kept.push_back(std::move(e.mesh));

@@ -53,7 +53,9 @@ struct QuiltStats {
   int replaced = 0;           //!< output elements replaced by an input element (kept_in)
   int kept = 0;               //!< input elements that yielded to an output element (kept_out)
   int rejected_inputs = 0;    //!< unrelated input elements that would have collided
-  int dropped_elements = 0;   //!< removed by the clean-up pass (open or intersecting)
+  int dropped_elements = 0;   //!< removed by the clean-up pass: dropped_open + dropped_intersecting
+  int dropped_open = 0;       //!< not closed 2-manifolds although the swatch's elements are
+  int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
   int cells = 0;
   double cell_size = 0.0;
   std::map<std::string, double> stage_seconds;  //!< seed, match, correspondence, deform, merge, cleanup

@@ -1,0 +1,189 @@
+// Planar mesh quilting end to end (Section 2 of the paper) on small swatches: elements stay
+// whole, yarns continue across patch seams, chain mail covers the plane, and both back ends make
+// the same choices.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+#include <glm/common.hpp>
+
+#include "device.h"
+#include "error.h"
+#include "inspect/inspect_report.h"
+#include "mesh/topology.h"
+#include "quilt/planar_quilting.h"
+#include "spatial/intersecting_pairs.h"
+#include "swatch/chainmail.h"
+#include "swatch/weave.h"
+#include "support/run_cli.h"
+
+namespace meshquilt {
+namespace {
+
+struct Quality {
+  int elements = 0;
+  int closed = 0;
+  double longest = 0.0;            // largest x-y bbox side of an element / swatch's longer side
+  double intersecting_share = 0.0; // distinct faces in a pair of different elements / faces
+  double coverage = 0.0;
+  bool stitched = false;           // some element's face count differs from every swatch element's
+};
+
+Quality measure(const TriMesh& result, const TriMesh& swatch) {
+  Quality q;
+  InspectOptions options;
+  options.plane = true;
+  const InspectReport report = inspect_mesh(result, options);
+  q.elements = report.elements;
+  q.closed = report.closed_elements;
+  q.coverage = report.plane->coverage;
+
+  // Independent of inspect: element extents from the output's own element ids.
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const Vec3& p : swatch.positions) {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+  }
+  const double swatch_side = std::max(hi.x - lo.x, hi.y - lo.y);
+  std::map<int32_t, std::pair<glm::dvec2, glm::dvec2>> boxes;
+  std::map<int32_t, size_t> faces_per_element;
+  for (size_t f = 0; f < result.num_faces(); ++f) {
+    auto [it, fresh] = boxes.try_emplace(result.elements[f], glm::dvec2(1e300), glm::dvec2(-1e300));
+    ++faces_per_element[result.elements[f]];
+    for (int32_t v : result.triangles[f]) {
+      it->second.first = glm::min(it->second.first, glm::dvec2(result.positions[v]));
+      it->second.second = glm::max(it->second.second, glm::dvec2(result.positions[v]));
+    }
+  }
+  for (const auto& [e, box] : boxes)
+    q.longest = std::max(q.longest, std::max(box.second.x - box.first.x, box.second.y - box.first.y) / swatch_side);
+
+  std::set<size_t> swatch_counts;
+  for (const TriMesh& e : split_elements(swatch)) swatch_counts.insert(e.num_faces());
+  for (const auto& [e, n] : faces_per_element) q.stitched = q.stitched || !swatch_counts.count(n);
+
+  const TriMesh welded = weld_vertices(result);
+  const auto pairs = intersecting_face_pairs(welded, face_components(welded), IntersectionScope::different_elements);
+  std::set<int32_t> faces;
+  for (const auto& [a, b] : pairs) {
+    faces.insert(a);
+    faces.insert(b);
+  }
+  q.intersecting_share = static_cast<double>(faces.size()) / welded.num_faces();
+  return q;
+}
+
+TriMesh quilt(const TriMesh& swatch, double size, QuiltStats* stats, engine::BackendChoice backend = engine::BackendChoice::cpu) {
+  auto device = engine::open_device(backend);
+  PlanarQuiltOptions options;
+  options.width = options.height = size;
+  options.seed = 7;
+  return quilt_plane(swatch, *device, options, stats);
+}
+
+// Four rows of rings so the swatch holds two vertical periods: with half-swatch sub-patches the
+// candidate translations then span a whole period in both directions. 1,440 faces.
+ChainmailOptions test_chainmail() {
+  ChainmailOptions options;
+  options.rows = 4;
+  options.columns = 3;
+  options.ring_segments = 12;
+  options.wire_segments = 5;
+  return options;
+}
+
+TEST(PlanarQuilting, WeaveYarnsContinueAcrossSeams) {
+  const TriMesh swatch = make_weave(WeaveOptions::small());
+  QuiltStats stats;
+  const TriMesh result = quilt(swatch, 4.0, &stats);
+  const Quality q = measure(result, swatch);
+  EXPECT_GE(q.longest, 2.5);
+  EXPECT_GE(q.closed, 0.98 * q.elements);
+  EXPECT_LE(q.intersecting_share, 0.001);
+  EXPECT_LE(stats.dropped_elements, 0.01 * q.elements);
+  EXPECT_GT(stats.stitched, 0);
+}
+
+TEST(PlanarQuilting, ChainMailStaysWholeAndCovers) {
+  const TriMesh swatch = make_chainmail(test_chainmail());
+  QuiltStats stats;
+  const TriMesh result = quilt(swatch, 4.0, &stats);
+  const Quality q = measure(result, swatch);
+  EXPECT_GE(q.closed, 0.98 * q.elements);
+  EXPECT_LE(q.intersecting_share, 0.001);
+  EXPECT_GE(q.coverage, 0.98);
+  EXPECT_TRUE(q.stitched);
+  EXPECT_LE(stats.dropped_elements, 0.01 * q.elements);
+  // 4 x 4 swatch extents hold far more rings than one swatch.
+  EXPECT_GT(q.elements, 8 * 12);
+}
+
+TEST(PlanarQuilting, SameSeedSameOutputOtherSeedOther) {
+  const TriMesh swatch = make_chainmail(test_chainmail());
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  PlanarQuiltOptions options;
+  options.width = options.height = 2.0;
+  options.seed = 3;
+  const TriMesh a = quilt_plane(swatch, *device, options);
+  const TriMesh b = quilt_plane(swatch, *device, options);
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.triangles, b.triangles);
+  options.seed = 4;
+  const TriMesh c = quilt_plane(swatch, *device, options);
+  EXPECT_NE(a.positions, c.positions);
+}
+
+bool vulkan_available() {
+  try {
+    engine::open_device(engine::BackendChoice::vulkan);
+    return true;
+  } catch (const DeviceError&) {
+    return false;
+  }
+}
+
+TEST(PlanarQuilting, VulkanAndCpuGiveTheSameOutputFiles) {
+  if (!vulkan_available()) {
+    if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true") FAIL() << "no Vulkan device under CI";
+    GTEST_SKIP() << "no Vulkan device";
+  }
+  const auto dir = test::scratch_dir("backend_parity");
+  const auto swatch = dir / "chain.ply";
+  ASSERT_EQ(test::run_cli("swatch chainmail --preset small -o '" + swatch.string() + "'").exit_code, 0);
+  std::string files[2];
+  const char* backends[2] = {"cpu", "vulkan"};
+  for (int k = 0; k < 2; ++k) {
+    const auto out = dir / (std::string(backends[k]) + ".ply");
+    const auto stats = dir / (std::string(backends[k]) + ".json");
+    const test::CliResult r = test::run_cli("synth --swatch '" + swatch.string() + "' --plane 2x2 --seed 5 --progress none --backend " +
+                                            backends[k] + " --stats '" + stats.string() + "' -o '" + out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    files[k] = test::read_file(out);
+    const std::string json = test::read_file(stats);
+    for (const char* key : {"\"faces\"", "\"vertices\"", "\"elements\"", "\"seconds\"", "\"backend\"", "\"seed\"",
+                            "\"stages\"", "\"dropped_elements\""})
+      EXPECT_NE(json.find(key), std::string::npos) << key;
+    EXPECT_NE(json.find(std::string("\"backend\": \"") + backends[k] + "\""), std::string::npos) << json;
+  }
+  EXPECT_GT(files[0].size(), 1000u);
+  EXPECT_TRUE(files[0] == files[1]) << "the back ends chose differently";
+}
+
+TEST(SynthCli, ProgressAsJsonLines) {
+  const auto dir = test::scratch_dir("progress_json");
+  const auto swatch = dir / "chain.ply";
+  ASSERT_EQ(test::run_cli("swatch chainmail --preset small -o '" + swatch.string() + "'").exit_code, 0);
+  const test::CliResult r = test::run_cli("synth --swatch '" + swatch.string() +
+                                          "' --plane 1x1 --backend cpu --progress json -o '" + (dir / "o.obj").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("{\"event\":\"progress\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("{\"event\":\"done\""), std::string::npos) << r.output;
+  // OBJ output keeps element ids as groups.
+  EXPECT_NE(test::read_file(dir / "o.obj").find("g element_0"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace meshquilt
