@@ -26,47 +26,21 @@ float segment_distance2(vec3 p, vec3 a, vec3 b) {
   return dot(d, d);
 }
 
-// Squared distance from p to triangle abc: Ericson, Real-Time Collision Detection, 5.1.5.
-// Divisions are guarded so that near-degenerate input cannot produce NaN.
-float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c) {
-  vec3 ab = b - a;
-  vec3 ac = c - a;
-  vec3 ap = p - a;
-  float d1 = dot(ab, ap);
-  float d2 = dot(ac, ap);
-  vec3 closest;
-  if (d1 <= 0.0 && d2 <= 0.0) {
-    closest = a;
-  } else {
-    vec3 bp = p - b;
-    float d3 = dot(ab, bp);
-    float d4 = dot(ac, bp);
-    float vc = d1 * d4 - d3 * d2;
-    vec3 cp = p - c;
-    float d5 = dot(ab, cp);
-    float d6 = dot(ac, cp);
-    float vb = d5 * d2 - d1 * d6;
-    float va = d3 * d6 - d5 * d4;
-    if (d3 >= 0.0 && d4 <= d3) {
-      closest = b;
-    } else if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-      closest = a + clamp(d1 / max(d1 - d3, 1e-30), 0.0, 1.0) * ab;
-    } else if (d6 >= 0.0 && d5 <= d6) {
-      closest = c;
-    } else if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-      closest = a + clamp(d2 / max(d2 - d6, 1e-30), 0.0, 1.0) * ac;
-    } else if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-      closest = b + clamp((d4 - d3) / max((d4 - d3) + (d5 - d6), 1e-30), 0.0, 1.0) * (c - b);
-    } else {
-      float denom = va + vb + vc;
-      if (!(denom > 0.0)) {
-        return min(segment_distance2(p, a, b), min(segment_distance2(p, a, c), segment_distance2(p, b, c)));
-      }
-      closest = a + ab * (vb / denom) + ac * (vc / denom);
-    }
-  }
-  vec3 d = p - closest;
-  return dot(d, d);
+// Squared distance from p to triangle abc, exact: to the plane when p projects inside the
+// triangle, else to the nearest edge. Branch-free, so SIMD lanes never diverge in it; a
+// degenerate triangle (no usable plane) uses its edges only.
+float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate) {
+  vec3 n = cross(b - a, c - a);
+  float nn = dot(n, n);
+  // Signed areas of the projection of p against each edge (all >= 0 inside).
+  float u = dot(cross(b - p, c - p), n);
+  float v = dot(cross(c - p, a - p), n);
+  float w = dot(cross(a - p, b - p), n);
+  float h = dot(p - a, n);
+  float plane2 = h * h / max(nn, 1e-30);
+  float edge2 = min(segment_distance2(p, a, b), min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
+  bool inside = !degenerate && nn > 0.0 && u >= 0.0 && v >= 0.0 && w >= 0.0;
+  return inside ? min(plane2, edge2) : edge2;
 }
 
 // A lower bound of D over the faces of one cell: distance to their box, and the angle between n
@@ -131,16 +105,14 @@ Search start_search(vec3 q, vec3 n) {
 // the search is over (s.best is then Eq. 2's minimum).
 bool step(inout Search s) {
   if (s.k < s.k_end) {
-    MatchingFace f = faces[cell_faces[s.k]];
+    uint face = cell_faces[s.k];
     s.k += 1u;
-    float normal_factor = 1.0 + length(s.n - f.normal.xyz);
-    vec3 middle = (f.a.xyz + f.b.xyz + f.c.xyz) * (1.0 / 3.0);
-    float sphere_gap = max(length(s.q - middle) - f.a.w, 0.0);
+    vec4 sphere = faces[face].sphere;
+    vec4 normal = faces[face].normal;
+    float normal_factor = 1.0 + length(s.n - normal.xyz);
+    float sphere_gap = max(length(s.q - sphere.xyz) - sphere.w, 0.0);
     if ((1.0 + params.lambda * sphere_gap) * normal_factor < s.best) {
-      float dist2 = f.normal.w != 0.0
-          ? min(segment_distance2(s.q, f.a.xyz, f.b.xyz),
-                min(segment_distance2(s.q, f.a.xyz, f.c.xyz), segment_distance2(s.q, f.b.xyz, f.c.xyz)))
-          : triangle_distance2(s.q, f.a.xyz, f.b.xyz, f.c.xyz);
+      float dist2 = triangle_distance2(s.q, faces[face].a.xyz, faces[face].b.xyz, faces[face].c.xyz, normal.w != 0.0);
       s.best = min(s.best, (1.0 + params.lambda * sqrt(dist2)) * normal_factor);
     }
     return true;

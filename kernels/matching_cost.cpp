@@ -74,18 +74,18 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
     const double twice_area = glm::length(cross);
     const double longest2 =
         std::max({glm::dot(db - da, db - da), glm::dot(dc - da, dc - da), glm::dot(dc - db, dc - db)});
-    // A triangle thinner than ~1e-6 of its longest edge defeats float barycentrics; the kernel
+    // A triangle thinner than ~1e-6 of its longest edge has no usable plane in float; the kernel
     // then measures the distance to its three edges, which is exact for a flat sliver.
     const bool degenerate = !(twice_area > 1e-6 * longest2);
     const glm::dvec3 normal = twice_area > 0.0 ? cross / twice_area : glm::dvec3(0.0);
-    // The kernel recomputes this centroid in float; the radius is measured from that point and
-    // padded so the bounding-sphere test never rejects a face it should keep.
+    // The radius is measured from the float centroid and padded, so the bounding-sphere test
+    // never rejects a face it should keep.
     const glm::vec3 middle = (a + b + c) * (1.0f / 3.0f);
     const double radius = std::max({glm::length(da - glm::dvec3(middle)), glm::length(db - glm::dvec3(middle)),
                                     glm::length(dc - glm::dvec3(middle))});
     const float padded = static_cast<float>(radius * (1.0 + 1e-5) + 1e-7 * std::sqrt(longest2));
-    faces[f] = {glm::vec4(a, padded), glm::vec4(b, 0.0f), glm::vec4(c, 0.0f),
-                glm::vec4(glm::vec3(normal), degenerate ? 1.0f : 0.0f)};
+    faces[f] = {glm::vec4(middle, padded), glm::vec4(glm::vec3(normal), degenerate ? 1.0f : 0.0f),
+                glm::vec4(a, 0.0f), glm::vec4(b, 0.0f), glm::vec4(c, 0.0f)};
     face_low[f] = glm::min(glm::min(glm::dvec2(da), glm::dvec2(db)), glm::dvec2(dc));
     face_high[f] = glm::max(glm::max(glm::dvec2(da), glm::dvec2(db)), glm::dvec2(dc));
     low = glm::min(low, face_low[f]);

@@ -24,45 +24,19 @@ float segment_distance2(vec3 p, vec3 a, vec3 b) {
   return glm::dot(d, d);
 }
 
-// Ericson, Real-Time Collision Detection, 5.1.5, with the same guards as the shader.
-float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c) {
-  const vec3 ab = b - a;
-  const vec3 ac = c - a;
-  const vec3 ap = p - a;
-  const float d1 = glm::dot(ab, ap);
-  const float d2 = glm::dot(ac, ap);
-  vec3 closest;
-  if (d1 <= 0.0f && d2 <= 0.0f) {
-    closest = a;
-  } else {
-    const vec3 bp = p - b;
-    const float d3 = glm::dot(ab, bp);
-    const float d4 = glm::dot(ac, bp);
-    const float vc = d1 * d4 - d3 * d2;
-    const vec3 cp = p - c;
-    const float d5 = glm::dot(ab, cp);
-    const float d6 = glm::dot(ac, cp);
-    const float vb = d5 * d2 - d1 * d6;
-    const float va = d3 * d6 - d5 * d4;
-    if (d3 >= 0.0f && d4 <= d3) {
-      closest = b;
-    } else if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
-      closest = a + std::clamp(d1 / std::max(d1 - d3, 1e-30f), 0.0f, 1.0f) * ab;
-    } else if (d6 >= 0.0f && d5 <= d6) {
-      closest = c;
-    } else if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) {
-      closest = a + std::clamp(d2 / std::max(d2 - d6, 1e-30f), 0.0f, 1.0f) * ac;
-    } else if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f) {
-      closest = b + std::clamp((d4 - d3) / std::max((d4 - d3) + (d5 - d6), 1e-30f), 0.0f, 1.0f) * (c - b);
-    } else {
-      const float denom = va + vb + vc;
-      if (!(denom > 0.0f))
-        return std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, a, c), segment_distance2(p, b, c)));
-      closest = a + ab * (vb / denom) + ac * (vc / denom);
-    }
-  }
-  const vec3 d = p - closest;
-  return glm::dot(d, d);
+// The shader's exact, branch-free distance: to the plane when p projects inside, else to the
+// nearest edge; edges only for a degenerate triangle.
+float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate) {
+  const vec3 n = glm::cross(b - a, c - a);
+  const float nn = glm::dot(n, n);
+  const float u = glm::dot(glm::cross(b - p, c - p), n);
+  const float v = glm::dot(glm::cross(c - p, a - p), n);
+  const float w = glm::dot(glm::cross(a - p, b - p), n);
+  const float h = glm::dot(p - a, n);
+  const float plane2 = h * h / std::max(nn, 1e-30f);
+  const float edge2 = std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
+  const bool inside = !degenerate && nn > 0.0f && u >= 0.0f && v >= 0.0f && w >= 0.0f;
+  return inside ? std::min(plane2, edge2) : edge2;
 }
 
 struct Swatch {
@@ -126,15 +100,10 @@ float point_cost(const Swatch& s, vec3 q, vec3 n) {
         if (s.cell_start[cell] == k_end || cell_bound(s.cells[cell], lambda, q, n) >= best) continue;
         for (uint k = s.cell_start[cell]; k < k_end; ++k) {
           const MatchingFace& f = s.faces[s.cell_faces[k]];
-          const vec3 a(f.a), b(f.b), c(f.c), fn(f.normal);
-          const float normal_factor = 1.0f + glm::length(n - fn);
-          const vec3 middle = (a + b + c) * (1.0f / 3.0f);
-          const float sphere_gap = std::max(glm::length(q - middle) - f.a.w, 0.0f);
+          const float normal_factor = 1.0f + glm::length(n - vec3(f.normal));
+          const float sphere_gap = std::max(glm::length(q - vec3(f.sphere)) - f.sphere.w, 0.0f);
           if ((1.0f + lambda * sphere_gap) * normal_factor >= best) continue;
-          const float dist2 =
-              f.normal.w != 0.0f
-                  ? std::min(segment_distance2(q, a, b), std::min(segment_distance2(q, a, c), segment_distance2(q, b, c)))
-                  : triangle_distance2(q, a, b, c);
+          const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f);
           best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
         }
       }

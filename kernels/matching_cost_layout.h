@@ -32,12 +32,14 @@ using vec4 = glm::vec4;
 #define MATCHING_COST_PER_PAIR 0u  // one invocation per (candidate, point) pair
 #define MATCHING_COST_PER_POINT 1u // one invocation per point, looping over candidates
 
-// A swatch face with what the search needs precomputed on the host.
+// A swatch face with what the search needs precomputed on the host. The first two vectors
+// are all a face needs to be rejected; the corners are read only for faces that pass.
 struct MatchingFace {
-  vec4 a;      // xyz: vertex 0; w: radius of the bounding sphere around the centroid
-  vec4 b;      // xyz: vertex 1; w: 0
-  vec4 c;      // xyz: vertex 2; w: 0
+  vec4 sphere; // xyz: centroid; w: radius of the bounding sphere around it (padded)
   vec4 normal; // xyz: unit face normal (zero if degenerate); w: 1 if degenerate, else 0
+  vec4 a;      // xyz: vertex 0
+  vec4 b;      // xyz: vertex 1
+  vec4 c;      // xyz: vertex 2
 };
 
 // What bounds D over the faces of one grid cell: their 3D bounding box and a cone holding their
@@ -71,7 +73,7 @@ struct MatchingCostParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(MatchingFace) == 64 && offsetof(MatchingFace, normal) == 48);
+static_assert(sizeof(MatchingFace) == 80 && offsetof(MatchingFace, normal) == 16 && offsetof(MatchingFace, c) == 64);
 static_assert(sizeof(MatchingCell) == 48 && offsetof(MatchingCell, cone_axis) == 32);
 static_assert(sizeof(MatchingPoint) == 32 && offsetof(MatchingPoint, normal) == 16);
 static_assert(sizeof(vec2) == 8, "std430 vec2 array stride");
