@@ -60,6 +60,9 @@ void add_inspect_command(CLI::App& app) {
     if (!args->base.empty()) base_mesh = read_mesh(args->base);
     InspectOptions options;
     options.plane = args->plane;
+    options.mesh_name = args->mesh.string();
+    options.swatch_name = args->swatch.string();
+    options.base_name = args->base.string();
     if (shell->count() > 0) options.shell_height = args->shell_height;
     const InspectReport report =
         inspect_mesh(mesh, options, swatch ? &*swatch : nullptr, base_mesh ? &*base_mesh : nullptr);

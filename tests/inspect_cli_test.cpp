@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,12 @@ TriMesh torus(const Vec3& center, const Vec3& a, const Vec3& b, double R, double
   return m;
 }
 
+std::string quote(const std::string& s) {
+  std::string q("'");
+  q.append(s).append("'");
+  return q;
+}
+
 struct CliRun {
   int code = -1;
   std::string out, err;
@@ -62,10 +69,13 @@ class InspectCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  CliRun run(const std::string& args) {
+  // Runs `meshquilt inspect ARGS...`, each argument quoted for the shell.
+  CliRun run(const std::vector<std::string>& args) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("\"") + MESHQUILT_CLI + "\" inspect " + args + " >\"" + out.string() + "\" 2>\"" +
-                                err.string() + "\"";
+    std::string command = quote(MESHQUILT_CLI);
+    command.append(" inspect");
+    for (const std::string& a : args) command.append(" ").append(quote(a));
+    command.append(" >").append(quote(out.string())).append(" 2>").append(quote(err.string()));
     const int status = std::system(command.c_str());
     CliRun r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -86,7 +96,7 @@ TEST_F(InspectCli, JsonReportOfLinkedRings) {
   const fs::path file = dir_ / "rings.ply";
   write_mesh(m, file);
 
-  const CliRun r = run("\"" + file.string() + "\" --json --swatch \"" + file.string() + "\" --plane");
+  const CliRun r = run({file.string(), "--json", "--swatch", file.string(), "--plane"});
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("faces").get<int64_t>(), 2 * 32 * 12 * 2);
@@ -112,7 +122,7 @@ TEST_F(InspectCli, BaseHeightsAndReadableReport) {
   const fs::path base_file = dir_ / "base.obj", ring_file = dir_ / "ring.off";
   write_mesh(base, base_file);
   write_mesh(torus({0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12), ring_file);
-  const CliRun r = run("\"" + ring_file.string() + "\" --base \"" + base_file.string() + "\" --shell-height 0.1 --json");
+  const CliRun r = run({ring_file.string(), "--base", base_file.string(), "--shell-height", "0.1", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const double diagonal = std::sqrt(32.0);
@@ -123,7 +133,7 @@ TEST_F(InspectCli, BaseHeightsAndReadableReport) {
   for (const Vec3& p : torus({0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12).positions) expected += p.z > 0.1 * diagonal;
   EXPECT_EQ(j.at("outside_shell_vertices").get<int>(), expected);
 
-  const CliRun text = run("\"" + ring_file.string() + "\"");
+  const CliRun text = run({ring_file.string()});
   ASSERT_EQ(text.code, 0);
   EXPECT_NE(text.out.find("elements:"), std::string::npos);
   EXPECT_NE(text.out.find("1, of which 1 closed"), std::string::npos);
@@ -136,17 +146,24 @@ bool one_line_naming(const std::string& err, const std::string& name) {
 TEST_F(InspectCli, BrokenAndMissingFilesGiveOneLineErrors) {
   const fs::path broken = dir_ / "broken.off";
   std::ofstream(broken) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";  // truncated
-  const CliRun r = run("\"" + broken.string() + "\" --json");
+  const CliRun r = run({broken.string(), "--json"});
   EXPECT_NE(r.code, 0);
   EXPECT_TRUE(one_line_naming(r.err, "broken.off")) << r.err;
   EXPECT_TRUE(r.out.empty());
 
-  const CliRun missing = run("\"" + (dir_ / "nowhere.ply").string() + "\"");
+  // Faces that all collapse when coincident vertices are welded.
+  const fs::path flat = dir_ / "collapsed.obj";
+  std::ofstream(flat) << "v 0 0 0\nv 0 0 0\nv 1 1 1\nf 1 2 3\n";
+  const CliRun collapsed = run({flat.string()});
+  EXPECT_EQ(collapsed.code, 5);  // ExitCode::invalid_mesh
+  EXPECT_TRUE(one_line_naming(collapsed.err, "collapsed.obj")) << collapsed.err;
+
+  const CliRun missing = run({(dir_ / "nowhere.ply").string()});
   EXPECT_EQ(missing.code, 3);  // ExitCode::file_unreadable
   EXPECT_TRUE(one_line_naming(missing.err, "nowhere.ply")) << missing.err;
 
-  const CliRun bad_swatch = run("\"" + broken.string() + "\" --plane --base \"" + broken.string() + "\"");
-  EXPECT_EQ(bad_swatch.code, 2);  // --plane and --base exclude each other: usage error
+  const CliRun both = run({broken.string(), "--plane", "--base", broken.string()});
+  EXPECT_EQ(both.code, 2);  // --plane and --base exclude each other: usage error
 }
 
 }  // namespace

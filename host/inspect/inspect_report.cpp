@@ -30,10 +30,10 @@ class StageTimer {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-TriMesh welded_or_throw(const TriMesh& mesh, double tolerance, const char* what) {
+TriMesh welded_or_throw(const TriMesh& mesh, double tolerance, const std::string& name) {
   TriMesh welded = weld_vertices(mesh, tolerance);
   welded.elements.clear();  // elements are the connected components here
-  if (welded.num_faces() == 0) throw InputError(std::string(what) + " has no faces after welding");
+  if (welded.num_faces() == 0) throw InputError(name + ": no faces left after welding coincident vertices");
   return welded;
 }
 
@@ -51,7 +51,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   InspectReport report;
   StageTimer timer(report.timings);
   report.weld_tolerance = options.weld_tolerance;
-  const TriMesh mesh = welded_or_throw(input, options.weld_tolerance, "mesh");
+  const TriMesh mesh = welded_or_throw(input, options.weld_tolerance, options.mesh_name);
   report.faces = static_cast<int64_t>(mesh.num_faces());
   report.vertices = static_cast<int64_t>(mesh.num_vertices());
   timer.lap("weld");
@@ -81,7 +81,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   timer.lap("element sizes");
 
   if (swatch_input) {
-    const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, "swatch");
+    const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, options.swatch_name);
     int32_t count = 0;
     const std::vector<int32_t> swatch_elements = face_components(swatch, &count);
     const ElementMeasures sm = element_measures(swatch, swatch_elements, count);
@@ -101,7 +101,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   }
 
   if (base_input) {
-    const TriMesh base = welded_or_throw(*base_input, options.weld_tolerance, "base mesh");
+    const TriMesh base = welded_or_throw(*base_input, options.weld_tolerance, options.base_name);
     BaseCoverageOptions base_options = options.base_options;
     if (options.shell_height) base_options.shell_height = options.shell_height;
     const double radius = 0.5 * positive_median(measures.extent, 0.01 * (diagonal > 0.0 ? diagonal : 1.0));

@@ -22,6 +22,10 @@ struct InspectOptions {
   std::optional<double> shell_height;      //!< H for --base, in units of the base's bbox diagonal
   PlaneCoverageOptions plane_options;      //!< margin and grid limits for the plane coverage
   BaseCoverageOptions base_options;        //!< sampling of the base (shell_height above wins)
+  // Names used in error messages (the CLI passes the file paths).
+  std::string mesh_name = "mesh";
+  std::string swatch_name = "swatch";
+  std::string base_name = "base mesh";
 };
 
 struct InspectReport {
