@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <random>
 
 #include "merging_fixtures.h"
+#include "mesh/mesh_io.h"
 #include "quilt/element_merging.h"
 
 namespace meshquilt {
@@ -228,6 +230,29 @@ TEST(ElementMerging, RandomYarnPairsAlwaysYieldAClosedElement) {
   }
   std::printf("random yarns: %d of %d stitched\n", stitched, trials);
   EXPECT_GE(stitched, trials * 3 / 4);
+}
+
+// A real closed tube (CGAL's torus knot, genus 1) against a misaligned copy of itself, cut by
+// planes that cross it two or three times.
+TEST(ElementMerging, RealKnotStitchesAcrossEveryCrossing) {
+  const std::filesystem::path file = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/knot.off";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not available";
+  const TriMesh out = read_mesh(file);
+  ASSERT_EQ(test::topology(out).euler, 0);
+  Vec3 lo(1e300), hi(-1e300);
+  for (const Vec3& p : out.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const Vec3 centre = 0.5 * (lo + hi);
+  for (double plane : {0.0, 0.2, -0.3}) {
+    TriMesh in = out;
+    test::rotate_z(in, 0.02, centre);
+    for (Vec3& p : in.positions) p += Vec3(0.003, -0.002, 0.002) * glm::length(hi - lo);
+    const double cut = centre.x + plane * 0.5 * (hi.x - lo.x);
+    const MergeResult r = merge_elements(out, in, [cut](const Vec3& p) { return p.x > cut; });
+    SCOPED_TRACE("plane " + std::to_string(plane) + ": " + r.fallback);
+    ASSERT_EQ(r.outcome, MergeOutcome::stitched);
+    EXPECT_GE(r.seam_loops, 2);
+    expect_closed_single_component(r.element, 0);
+  }
 }
 
 }  // namespace

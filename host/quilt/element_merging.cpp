@@ -227,8 +227,11 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   std::vector<double> to_seam(ci.num_faces(), std::numeric_limits<double>::infinity());
   if (!seam.empty())
     for (size_t f = 0; f < ci.num_faces(); ++f) to_seam[f] = distance_to_segments(centroid(ci, f), seam);
-  // When the input reaches only a little past the output's seam, the margin could swallow every
-  // face that must be deleted; then the margin shrinks until some face is SINK-linked.
+  // The margin is tried wide first (a smooth cut of its own), then narrower: when the input reaches
+  // only a little past the output's seam, a wide margin can swallow every face that must be
+  // deleted, and a wide free band may join two nearby seams into one loop. At margin zero the
+  // input's cut is the exact complement of the output's, whose loops then pair one-to-one.
+  std::string failure = "the input element was never cut";
   for (double scale : {1.0, 0.5, 0.0}) {
     std::fill(g_in.source_caps.begin(), g_in.source_caps.end(), 0.0);
     std::fill(g_in.sink_caps.begin(), g_in.sink_caps.end(), 0.0);
@@ -245,26 +248,32 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
       (keep_out[cp.face] ? g_in.sink_caps[f] : g_in.source_caps[f]) = kInfiniteCapacity;
       any_sink = any_sink || keep_out[cp.face];
     }
-    if (any_sink) break;
+    if (!any_sink && scale > 0.0) continue;
+    std::vector<uint8_t> keep_in = minimum_cut(g_in).source_side;
+    tidy_cut(ci, nb_in, keep_in);
+    const size_t kept_in_faces = count_set(keep_in);
+    if (kept_in_faces == 0) {
+      if (kept_out_faces == co.num_faces()) return whole(co, MergeOutcome::kept_out);
+      failure = "the input element's cut kept nothing to replace the deleted output";
+      continue;
+    }
+    if (kept_out_faces == co.num_faces()) return fall_back("the output element was not cut but the input keeps faces");
+    if (kept_in_faces == ci.num_faces()) {
+      failure = "the input element was not cut";
+      continue;
+    }
+    StitchResult stitched = stitch_parts(co, keep_out, ci, keep_in, options.stitch);
+    if (!stitched.ok) {
+      failure = stitched.failure;
+      continue;
+    }
+    MergeResult r;
+    r.outcome = MergeOutcome::stitched;
+    r.element = std::move(stitched.mesh);
+    r.seam_loops = stitched.loop_pairs;
+    return r;
   }
-  std::vector<uint8_t> keep_in = minimum_cut(g_in).source_side;
-  tidy_cut(ci, nb_in, keep_in);
-  const size_t kept_in_faces = count_set(keep_in);
-
-  if (kept_in_faces == 0) {
-    if (kept_out_faces == co.num_faces()) return whole(co, MergeOutcome::kept_out);
-    return fall_back("the input element's cut kept nothing to replace the deleted output");
-  }
-  if (kept_out_faces == co.num_faces()) return fall_back("the output element was not cut but the input keeps faces");
-  if (kept_in_faces == ci.num_faces()) return fall_back("the input element was not cut");
-
-  StitchResult stitched = stitch_parts(co, keep_out, ci, keep_in, options.stitch);
-  if (!stitched.ok) return fall_back(stitched.failure);
-  MergeResult r;
-  r.outcome = MergeOutcome::stitched;
-  r.element = std::move(stitched.mesh);
-  r.seam_loops = stitched.loop_pairs;
-  return r;
+  return fall_back(failure);
 }
 
 }  // namespace meshquilt
