@@ -144,13 +144,25 @@ class VulkanDevice final : public Device {
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device_, buffer, &requirements);
-    const std::uint32_t type = memory_type(requirements.memoryTypeBits);
-    VkMemoryAllocateInfo allocate_info{};
-    allocate_info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    allocate_info.allocationSize = requirements.size;
-    allocate_info.memoryTypeIndex = type;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkResult result = vkAllocateMemory(device_, &allocate_info, nullptr, &memory);
+    VkResult result = VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    // A small device-local, host-visible heap (a discrete GPU without resizable BAR) can run
+    // out; the next memory type in order of preference is then tried.
+    std::vector<std::uint32_t> types;
+    try {
+      types = memory_types(requirements.memoryTypeBits);
+    } catch (...) {
+      vkDestroyBuffer(device_, buffer, nullptr);
+      throw;
+    }
+    for (std::uint32_t type : types) {
+      VkMemoryAllocateInfo allocate_info{};
+      allocate_info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+      allocate_info.allocationSize = requirements.size;
+      allocate_info.memoryTypeIndex = type;
+      result = vkAllocateMemory(device_, &allocate_info, nullptr, &memory);
+      if (result != VK_ERROR_OUT_OF_DEVICE_MEMORY) break;
+    }
     if (result != VK_SUCCESS) {
       vkDestroyBuffer(device_, buffer, nullptr);
       check(result, "vkAllocateMemory");
@@ -431,14 +443,19 @@ class VulkanDevice final : public Device {
 
   // Host-visible and coherent is required (buffers stay mapped, no flushes); device-local on
   // top of that is preferred (resizable BAR on discrete GPUs, everything on lavapipe).
-  std::uint32_t memory_type(std::uint32_t allowed) const {
+  std::vector<std::uint32_t> memory_types(std::uint32_t allowed) const {
     const VkMemoryPropertyFlags required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    const VkMemoryPropertyFlags preferred = required | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-    for (VkMemoryPropertyFlags wanted : {preferred, required})
-      for (std::uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i)
-        if ((allowed & (1u << i)) && (memory_properties_.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
-    throw DeviceError(std::string("vulkan: no host-visible coherent memory type for storage buffers on ") +
-                      properties_.deviceName);
+    std::vector<std::uint32_t> preferred, others;
+    for (std::uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
+      const VkMemoryPropertyFlags flags = memory_properties_.memoryTypes[i].propertyFlags;
+      if (!(allowed & (1u << i)) || (flags & required) != required) continue;
+      (flags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT ? preferred : others).push_back(i);
+    }
+    preferred.insert(preferred.end(), others.begin(), others.end());
+    if (preferred.empty())
+      throw DeviceError(std::string("vulkan: no host-visible coherent memory type for storage buffers on ") +
+                        properties_.deviceName);
+    return preferred;
   }
 
   VkInstance instance_ = VK_NULL_HANDLE;
