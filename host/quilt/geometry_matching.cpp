@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "device.h"
@@ -65,6 +66,34 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
   return total;
 }
 
+std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& points,
+                                                      const std::vector<Vec3>& normals,
+                                                      const glm::dvec2& start, double cost) const {
+  // A pattern search that halves its step, so a periodic swatch whose period is not a whole
+  // number of cells still lines up. It stays within one cell of the grid candidate.
+  glm::dvec2 t = start;
+  double step = 0.5 * cell_size_;
+  for (int s = 0; s < options_.refine_steps; ++s, step *= 0.5) {
+    bool improved = true;
+    while (improved) {
+      improved = false;
+      for (const glm::dvec2 d : {glm::dvec2(step, 0), glm::dvec2(-step, 0), glm::dvec2(0, step),
+                                 glm::dvec2(0, -step)}) {
+        const glm::dvec2 moved = t + d;
+        if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) continue;
+        const double c = exact_cost(points, normals, moved);
+        if (c < cost * (1.0 - 1e-12)) {
+          cost = c;
+          t = moved;
+          improved = true;
+          break;
+        }
+      }
+    }
+  }
+  return {t, cost};
+}
+
 MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const std::vector<glm::dvec2>& candidates,
                                    std::mt19937_64& rng) const {
@@ -89,43 +118,32 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   }
   result.rescored = static_cast<int>(exact.size());
 
-  // The host decides: a seeded random pick among the near-best, as image quilting does.
-  double exact_best = std::numeric_limits<double>::infinity();
-  for (const auto& e : exact) exact_best = std::min(exact_best, e.second);
-  std::vector<size_t> near_best;
-  for (const auto& e : exact)
-    if (e.second <= exact_best * (1.0 + options_.choose_tolerance)) near_best.push_back(e.first);
-  const size_t chosen = near_best[draw_index(rng, near_best.size())];
-  glm::dvec2 t = candidates[chosen];
-  double cost = 0.0;
-  for (const auto& e : exact)
-    if (e.first == chosen) cost = e.second;
-
-  // Continuous refinement in x-y: a pattern search that halves its step, so a periodic swatch
-  // whose period is not a whole number of cells still lines up.
-  // It stays within one cell of the grid choice, which keeps the swatch over the sub-patch.
-  const glm::dvec2 grid_choice = t;
-  double step = 0.5 * cell_size_;
-  for (int s = 0; s < options_.refine_steps; ++s, step *= 0.5) {
-    bool improved = true;
-    while (improved) {
-      improved = false;
-      for (const glm::dvec2 d : {glm::dvec2(step, 0), glm::dvec2(-step, 0), glm::dvec2(0, step),
-                                 glm::dvec2(0, -step)}) {
-        const glm::dvec2 moved = t + d;
-        if (std::abs(moved.x - grid_choice.x) > cell_size_ ||
-            std::abs(moved.y - grid_choice.y) > cell_size_)
-          continue;
-        const double c = exact_cost(points, normals, moved);
-        if (c < cost * (1.0 - 1e-12)) {
-          cost = c;
-          t += d;
-          improved = true;
-          break;
-        }
-      }
+  // Grid-unit translations sample a periodic swatch's equally good placements unevenly: one
+  // falls near a lattice position, the next one mid-cell. So every local minimum (over the
+  // 8-neighbourhood of the candidate grid) is refined before the choice, not just the best.
+  std::vector<std::pair<double, size_t>> minima;  // (exact cost, candidate)
+  for (const auto& [c, cost] : exact) {
+    bool lowest = true;
+    for (const auto& [o, other] : exact) {
+      const glm::dvec2 d = glm::abs(candidates[o] - candidates[c]);
+      if (o != c && d.x < 1.5 * cell_size_ && d.y < 1.5 * cell_size_ && (other < cost || (other == cost && o < c)))
+        lowest = false;
     }
+    if (lowest) minima.emplace_back(cost, c);
   }
+  std::sort(minima.begin(), minima.end());
+  if (minima.size() > static_cast<size_t>(options_.max_refined)) minima.resize(options_.max_refined);
+
+  std::vector<std::pair<glm::dvec2, double>> refined;
+  for (const auto& [cost, c] : minima) refined.push_back(refine(points, normals, candidates[c], cost));
+
+  // The host decides: a seeded random pick among the near-best, as image quilting does.
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& r : refined) best = std::min(best, r.second);
+  std::vector<size_t> near_best;
+  for (size_t k = 0; k < refined.size(); ++k)
+    if (refined[k].second <= best * (1.0 + options_.choose_tolerance)) near_best.push_back(k);
+  const auto& [t, cost] = refined[near_best[draw_index(rng, near_best.size())]];
   result.translation = t;
   result.cost = cost;
   return result;

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -25,8 +26,9 @@ class FaceBvh;
 
 struct MatchingOptions {
   double lambda = 1.0;           //!< Eq. 1 weight of distance against normal difference
-  double rescore_margin = 0.05;  //!< re-score candidates whose kernel cost <= best x (1 + margin)
-  double choose_tolerance = 0.01;  //!< choose at random among exact costs <= best x (1 + tolerance)
+  double rescore_margin = 0.25;  //!< re-score candidates whose kernel cost <= best x (1 + margin)
+  int max_refined = 6;           //!< refine at most this many local minima of the exact cost
+  double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
   int refine_steps = 4;          //!< continuous refinement: pattern-search step halvings
 };
 
@@ -55,6 +57,10 @@ class GeometryMatcher {
                     const glm::dvec2& translation) const;
 
  private:
+  //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).
+  std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                       const glm::dvec2& start, double cost) const;
+
   const TriMesh& swatch_;
   MatchingOptions options_;
   double cell_size_;

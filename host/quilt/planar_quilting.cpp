@@ -129,7 +129,16 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
   bool swatch_closed = true;
   for (const TriMesh& e : swatch_elements) swatch_closed = swatch_closed && is_closed_manifold(e);
 
-  GeometryMatcher matcher(device, swatch, cell, options.matching);
+  double edge_sum = 0.0;
+  for (const Tri& t : swatch.triangles)
+    for (int k = 0; k < 3; ++k) edge_sum += glm::distance(swatch.positions[t[k]], swatch.positions[t[(k + 1) % 3]]);
+  const double mean_edge = edge_sum / (3.0 * static_cast<double>(swatch.num_faces()));
+  MatchingOptions matching = options.matching;
+  matching.lambda = options.lambda / mean_edge;
+  CorrespondenceOptions correspondence = options.correspondence;
+  correspondence.lambda = options.lambda / mean_edge;
+
+  GeometryMatcher matcher(device, swatch, cell, matching);
   SeedFinder seeds(nx, ny);
   std::mt19937_64 rng(options.seed);
   std::vector<OutputElement> output;
@@ -207,7 +216,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
     Correspondences corr;
     {
       StageTimer timer(seconds, "correspondence");
-      corr = find_correspondences(outs, inputs, in_overlap, options.correspondence);
+      corr = find_correspondences(outs, inputs, in_overlap, correspondence);
     }
 
     // Merge partners, one to one, in decreasing order of shared pairs. Interlinked elements

@@ -37,6 +37,11 @@ struct PlanarQuiltOptions {
   int cells_across_swatch = 16;      //!< grid cells along the swatch's shorter x-y side
   double sub_patch_fraction = 0.5;   //!< output-sub-patch side / swatch side
   uint64_t seed = 1;                 //!< seeds every random choice
+  //! Eq. 1 weight of distance against normal difference. Eq. 1 is not scale invariant, so
+  //! distances are measured in units of the swatch's mean edge length: lambda = 1 then means
+  //! "one edge length off costs as much as a unit normal difference" at every swatch scale. It
+  //! overrides matching.lambda and correspondence.lambda.
+  double lambda = 1.0;
   bool cleanup = true;               //!< drop elements that could not be made whole
   int max_patches = 0;               //!< stop after this many patches (0: until done); for inspection
   MatchingOptions matching;
