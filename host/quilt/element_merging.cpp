@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -38,11 +39,37 @@ double point_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return glm::length(p - (a + t * ab));
 }
 
-double distance_to_segments(const Vec3& p, const std::vector<std::array<Vec3, 2>>& segments) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& s : segments) best = std::min(best, point_segment(p, s[0], s[1]));
-  return best;
-}
+//! Distance to a set of segments, exact up to `cap` and reported as `cap` beyond: a hash grid of
+//! cell size `cap` holds each segment in every cell its box grown by `cap` touches, so the cell
+//! of a query point lists every segment that can be within `cap` of it.
+class SegmentDistance {
+ public:
+  SegmentDistance(std::vector<std::array<Vec3, 2>> segments, double cap) : segments_(std::move(segments)), cap_(cap) {
+    for (size_t s = 0; s < segments_.size(); ++s) {
+      const Vec3 lo = glm::min(segments_[s][0], segments_[s][1]) - cap_, hi = glm::max(segments_[s][0], segments_[s][1]) + cap_;
+      for (int64_t i = cell(lo.x); i <= cell(hi.x); ++i)
+        for (int64_t j = cell(lo.y); j <= cell(hi.y); ++j)
+          for (int64_t k = cell(lo.z); k <= cell(hi.z); ++k) grid_[key(i, j, k)].push_back(static_cast<int32_t>(s));
+    }
+  }
+  double operator()(const Vec3& p) const {
+    const auto it = grid_.find(key(cell(p.x), cell(p.y), cell(p.z)));
+    double best = cap_;
+    if (it != grid_.end())
+      for (int32_t s : it->second) best = std::min(best, point_segment(p, segments_[s][0], segments_[s][1]));
+    return best;
+  }
+  bool empty() const { return segments_.empty(); }
+
+ private:
+  int64_t cell(double x) const { return static_cast<int64_t>(std::floor(x / cap_)); }
+  static uint64_t key(int64_t i, int64_t j, int64_t k) {
+    return static_cast<uint64_t>((i * 73856093) ^ (j * 19349663) ^ (k * 83492791));
+  }
+  std::vector<std::array<Vec3, 2>> segments_;
+  double cap_;
+  std::unordered_map<uint64_t, std::vector<int32_t>> grid_;
+};
 
 //! Faces within `radius` (along the dual graph, centroid to centroid) of a seed face.
 std::vector<uint8_t> grow(const TriMesh& m, const std::vector<std::array<int32_t, 3>>& nb,
@@ -220,13 +247,15 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
   // output faces are deleted, those nearest deleted output faces are kept, and only a margin
   // around the output's cut loops is left to the minimum cut, whose Eq. 7 weights measure the
   // distance to those loops, so both seams run side by side.
+  // Beyond a few margins the distance only has to say "far": capped there.
+  const SegmentDistance to_loops(seam, 4.0 * margin);
   std::vector<double> dist_in(ci.num_vertices());
   for (size_t v = 0; v < ci.num_vertices(); ++v)
-    dist_in[v] = seam.empty() ? bvh_out.closest_point(ci.positions[v]).distance : distance_to_segments(ci.positions[v], seam);
+    dist_in[v] = seam.empty() ? bvh_out.closest_point(ci.positions[v]).distance : to_loops(ci.positions[v]);
   CutGraph g_in = dual_graph(ci, nb_in, dist_in);
   std::vector<double> to_seam(ci.num_faces(), std::numeric_limits<double>::infinity());
   if (!seam.empty())
-    for (size_t f = 0; f < ci.num_faces(); ++f) to_seam[f] = distance_to_segments(centroid(ci, f), seam);
+    for (size_t f = 0; f < ci.num_faces(); ++f) to_seam[f] = to_loops(centroid(ci, f));
   // The margin is tried wide first (a smooth cut of its own), then narrower: when the input reaches
   // only a little past the output's seam, a wide margin can swallow every face that must be
   // deleted, and a wide free band may join two nearby seams into one loop. At margin zero the

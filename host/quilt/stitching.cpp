@@ -177,6 +177,20 @@ Alignment align_loops(const std::vector<Vec3>& P, const std::vector<Vec3>& Q, do
   return out;
 }
 
+//! Every edge shared by exactly two faces that traverse it in opposite directions.
+bool closed_oriented(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>& nb) {
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = nb[f][k];
+      if (g < 0) return false;
+      const int32_t a = mesh.triangles[f][k], b = mesh.triangles[f][(k + 1) % 3];
+      bool reverse = false;
+      for (int j = 0; j < 3; ++j) reverse = reverse || (mesh.triangles[g][j] == b && mesh.triangles[g][(j + 1) % 3] == a);
+      if (!reverse) return false;
+    }
+  return true;
+}
+
 StitchResult refuse(std::string why) {
   StitchResult r;
   r.failure = std::move(why);
@@ -408,8 +422,7 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
     for (const CutLoop& l : *set)
       if (l.vertices.size() < 3) return refuse("a cut loop has fewer than three vertices");
 
-  const SurfaceReport in_a = inspect_surface(a), in_b = inspect_surface(b);
-  const bool closed_inputs = in_a.closed_manifold() && in_b.closed_manifold();
+  const bool closed_inputs = closed_oriented(a, nb_a) && closed_oriented(b, nb_b);
 
   std::vector<int32_t> vmap_a, vmap_b, fmap_a, fmap_b;
   TriMesh pa = extract(a, keep_a, vmap_a, fmap_a);
