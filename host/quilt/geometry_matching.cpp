@@ -91,6 +91,23 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
       }
     }
   }
+  // Then a few translation-only ICP steps: a periodic swatch lines up exactly with the output
+  // it was copied into, and the pattern search alone would leave up to a step of error, which
+  // accumulates from patch to patch into seams where linked rings collide.
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    glm::dvec2 shift(0.0);
+    for (const Vec3& p : points) {
+      const Vec3 q = p - Vec3(t, 0.0);
+      shift += glm::dvec2(q - bvh_->closest_point(q).point);
+    }
+    shift /= static_cast<double>(points.size());
+    const glm::dvec2 moved = t + shift;
+    if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) break;
+    const double c = exact_cost(points, normals, moved);
+    if (!(c < cost)) break;
+    cost = c;
+    t = moved;
+  }
   return {t, cost};
 }
 
