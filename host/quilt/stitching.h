@@ -46,9 +46,9 @@ struct StitchOptions {
   double mu = 100.0;             //!< Eq. 5 weight of the seam and anchor constraints (the paper's
                                  //!< mu, raised from 1 so both are met nearly exactly and the bend
                                  //!< is confined between them)
-  double anchor_factor = 4.0;    //!< vertices farther than this many mean edge lengths from every
-                                 //!< seam vertex are held in place by Eq. 5 constraints too, so
-                                 //!< stitching only bends the parts near the seam; 0 disables
+  double anchor_factor = 4.0;    //!< only vertices within this many mean edge lengths of a seam
+                                 //!< point move: Eq. 5 is solved on the band of faces touching
+                                 //!< them, its outer vertices held in place; 0: whole parts
   double min_split = 0.15;       //!< a seam point may split a boundary edge only between this
                                  //!< fraction and 1 - it of the edge (else it is welded to an end)
   int32_t start_candidates = 4;  //!< starting correspondences tried per loop pair (nearest first)
@@ -67,8 +67,9 @@ struct StitchResult {
 //! polylines (every seam point is a vertex pair welded together or a vertex splitting the other
 //! loop's edge; the total distance between matched points is minimized over a few starting
 //! correspondences); both parts are deformed by Eq. 5 (uniform Laplacian) with their loop
-//! vertices pulled to the averaged seam; the seam is then welded exactly, splitting the boundary
-//! faces where a point falls inside an edge. No new triangles span a gap, so the seam has no
+//! vertices pulled to the averaged seam, within anchor_factor of it; the seam is then welded
+//! exactly, splitting a boundary face into a fan where points fall inside its edge (never
+//! nearer than min_split of the edge to an end). No new triangles span a gap, so the seam has no
 //! T-junctions and no slivers. The result must be one connected component, every seam face
 //! non-degenerate and oriented like the face it came from, and, when both inputs are closed
 //! oriented 2-manifolds, a closed oriented 2-manifold without pinched vertices; otherwise the
