@@ -50,7 +50,8 @@ struct StitchOptions {
                                  //!< point move: Eq. 5 is solved on the band of faces touching
                                  //!< them, its outer vertices held in place; 0: whole parts
   double min_split = 0.15;       //!< a seam point may split a boundary edge only between this
-                                 //!< fraction and 1 - it of the edge (else it is welded to an end)
+                                 //!< fraction and 1 - it of the edge (a nearer projection is moved
+                                 //!< to that bound; welding to the end is the DP's other choice)
   int32_t start_candidates = 4;  //!< starting correspondences tried per loop pair (nearest first)
   bool check_intersections = true;  //!< reject seams whose faces cross other faces (cheap check)
 };
