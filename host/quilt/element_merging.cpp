@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "error.h"
 #include "quilt/graph_cut.h"
 #include "spatial/face_bvh.h"
 
@@ -291,7 +292,13 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
       failure = "the input element was not cut";
       continue;
     }
-    StitchResult stitched = stitch_parts(co, keep_out, ci, keep_in, options.stitch);
+    // A failed seam solve is one more reason to keep an element whole, not to stop the synthesis.
+    StitchResult stitched;
+    try {
+      stitched = stitch_parts(co, keep_out, ci, keep_in, options.stitch);
+    } catch (const SolverError& e) {
+      stitched.failure = std::string("seam deformation: ") + e.what();
+    }
     if (!stitched.ok) {
       failure = stitched.failure;
       continue;

@@ -60,7 +60,9 @@ struct MergeResult {
 //! fallback element is returned unchanged (not deformed). Typical cost: a few milliseconds for
 //! elements of a thousand faces (two Embree BVHs, two max-flows, two small Eq. 5 solves).
 //! \pre both elements are welded triangle meshes, consistently oriented (outward).
-//! \throw SolverError when a deformation solve fails.
+//! A seam deformation that fails to solve (SolverError) also leads to the fallback.
+//! \throw InputError for non-finite positions (NaN capacities or targets); indices are not
+//!        range-checked.
 MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element,
                            const std::function<bool(const Vec3&)>& in_overlap,
                            const MergeOptions& options = {});
