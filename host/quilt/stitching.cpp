@@ -681,6 +681,7 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
     emit(pa, xa, f, amap, nb_a, nullptr, it == split_a.end() ? nullptr : &it->second, false,
          it == split_a.end() ? 0 : slot_a.at(static_cast<int32_t>(f)));
   }
+  const size_t faces_from_a = out.triangles.size();
   for (size_t f = 0; f < pb.num_faces(); ++f) {
     auto it = split_b.find(static_cast<int32_t>(f));
     emit(pb, xb, f, bmap, nb_b, nullptr, it == split_b.end() ? nullptr : &it->second, true,
@@ -742,7 +743,11 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
     std::vector<int32_t> stamp(result.num_faces(), -1);
     for (size_t f = 0; f < result.num_faces(); ++f) {
       const Tri& t = result.triangles[f];
-      if (!on_seam[t[0]] && !on_seam[t[1]] && !on_seam[t[2]]) continue;
+      const bool seam_face = on_seam[t[0]] || on_seam[t[1]] || on_seam[t[2]];
+      const bool from_a = f < faces_from_a;
+      // Part b's faces only meet part a's here (seam faces meet everything); each part's own
+      // faces were as they were before stitching.
+      if (!seam_face && !from_a) continue;
       for (int64_t i = cell_of(box[f][0].x); i <= cell_of(box[f][1].x); ++i)
         for (int64_t j = cell_of(box[f][0].y); j <= cell_of(box[f][1].y); ++j)
           for (int64_t k = cell_of(box[f][0].z); k <= cell_of(box[f][1].z); ++k) {
@@ -751,6 +756,7 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
             for (int32_t g : it->second) {
               if (g == static_cast<int32_t>(f) || stamp[g] == static_cast<int32_t>(f)) continue;
               stamp[g] = static_cast<int32_t>(f);
+              if (!seam_face && static_cast<size_t>(g) < faces_from_a) continue;
               const auto& bg = box[g];
               const auto& bf = box[f];
               if (bg[1].x < bf[0].x || bg[1].y < bf[0].y || bg[1].z < bf[0].z || bg[0].x > bf[1].x ||
@@ -760,7 +766,8 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
               bool shares = false;
               for (int a = 0; a < 3; ++a)
                 for (int b2 = 0; b2 < 3; ++b2) shares = shares || t[a] == u[b2];
-              if (!shares && triangles_cross(tri[f], tri[g])) return refuse("a seam face intersects another face");
+              if (!shares && triangles_cross(tri[f], tri[g]))
+                return refuse(seam_face ? "a seam face intersects another face" : "the two parts intersect away from the seam");
             }
           }
     }
