@@ -115,6 +115,7 @@ void run_synth(const SynthArgs& args) {
       {"replaced_elements", stats.replaced},
       {"yielded_inputs", stats.kept},
       {"rejected_inputs", stats.rejected_inputs},
+      {"refused_merges", stats.refused_merges},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
       {"dropped_intersecting", stats.dropped_intersecting},

@@ -7,6 +7,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "device.h"
 #include "matching_cost.h"
 #include "spatial/face_bvh.h"
@@ -50,19 +53,24 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
                                    const glm::dvec2& translation) const {
   const double lambda = options_.lambda;
   const Vec3 shift(translation.x, translation.y, 0.0);
+  // Per-point minima in parallel, summed in point order so the total is the same on every run.
+  std::vector<double> costs(points.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      const Vec3& n = normals[i];
+      double best = std::numeric_limits<double>::infinity();
+      bvh_->min_cost_face(
+          points[i] - shift,
+          [&](const ClosestPoint& cp) {
+            return (1.0 + lambda * cp.distance) * (1.0 + glm::length(n - face_normals_[cp.face]));
+          },
+          // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
+          [&](double d) { return (d - 1.0) / lambda; }, &best);
+      costs[i] = best;
+    }
+  });
   double total = 0.0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Vec3& n = normals[i];
-    double best = std::numeric_limits<double>::infinity();
-    bvh_->min_cost_face(
-        points[i] - shift,
-        [&](const ClosestPoint& cp) {
-          return (1.0 + lambda * cp.distance) * (1.0 + glm::length(n - face_normals_[cp.face]));
-        },
-        // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
-        [&](double d) { return (d - 1.0) / lambda; }, &best);
-    total += best;
-  }
+  for (double c : costs) total += c;
   return total;
 }
 

@@ -26,10 +26,10 @@ class FaceBvh;
 
 struct MatchingOptions {
   double lambda = 1.0;           //!< Eq. 1 weight of distance against normal difference
-  double rescore_margin = 0.25;  //!< re-score candidates whose kernel cost <= best x (1 + margin)
-  int max_refined = 6;           //!< refine at most this many local minima of the exact cost
+  double rescore_margin = 0.1;   //!< re-score candidates whose kernel cost <= best x (1 + margin)
+  int max_refined = 4;           //!< refine at most this many local minima of the exact cost
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
-  int refine_steps = 4;          //!< continuous refinement: pattern-search step halvings
+  int refine_steps = 3;          //!< pattern-search step halvings before the ICP steps
 };
 
 struct MatchResult {

@@ -229,6 +229,12 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
       std::vector<uint8_t> out_partnered(outs.size(), 0);
       for (const ElementRelation& r : corr.relations) {
         if (out_partnered[r.out_element] || in_partnered[r.in_element]) continue;
+        // Partners must coincide closely: a relation whose pairs are on average farther apart
+        // than half an edge is a neighbour seen through a misregistered seam, not a twin, and
+        // deforming or merging it would bend both out of shape.
+        double distance = 0.0;
+        for (int32_t k : r.pairs) distance += corr.pairs[k].distance;
+        if (distance > options.partner_distance * mean_edge * static_cast<double>(r.pairs.size())) continue;
         out_partnered[r.out_element] = in_partnered[r.in_element] = 1;
         partners.push_back(&r);
       }
@@ -257,19 +263,38 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
 
     {
       StageTimer timer(seconds, "merge");
-      for (const ElementRelation* partner : partners) {
-        const ElementRelation& r = *partner;
-        MergeResult merged = merge_elements(outs[r.out_element], inputs[r.in_element], in_overlap, options.merging);
-        switch (merged.outcome) {
-          case MergeOutcome::stitched: ++stats.stitched; outs[r.out_element] = std::move(merged.element); break;
-          case MergeOutcome::kept_in: ++stats.replaced; outs[r.out_element] = inputs[r.in_element]; break;
-          case MergeOutcome::kept_out: ++stats.kept; break;
-        }
-      }
       for (size_t o = 0; o < outs.size(); ++o) {
         OutputElement& e = output[affected[o]];
         e.mesh = std::move(outs[o]);
         e.bounds = xy_bounds(e.mesh);
+      }
+      // Elements near `mesh` in the output, but for output element `self`.
+      const auto neighbours = [&](const TriMesh& mesh, int32_t self) {
+        const Rect b = xy_bounds(mesh);
+        std::vector<const TriMesh*> near;
+        for (size_t k = 0; k < output.size(); ++k)
+          if (output[k].alive && static_cast<int32_t>(k) != self && output[k].bounds.overlaps(b))
+            near.push_back(&output[k].mesh);
+        return near;
+      };
+      for (const ElementRelation* partner : partners) {
+        const ElementRelation& r = *partner;
+        OutputElement& target = output[affected[r.out_element]];
+        MergeResult merged = merge_elements(target.mesh, inputs[r.in_element], in_overlap, options.merging);
+        if (merged.outcome == MergeOutcome::kept_out) {
+          ++stats.kept;
+          continue;
+        }
+        TriMesh& replacement = merged.outcome == MergeOutcome::stitched ? merged.element : inputs[r.in_element];
+        // A merged element that would pass through a neighbour (a seam where two patches'
+        // registrations disagree) is refused: the output element stays as it was.
+        if (collides(replacement, neighbours(replacement, affected[r.out_element]))) {
+          ++stats.refused_merges;
+          continue;
+        }
+        ++(merged.outcome == MergeOutcome::stitched ? stats.stitched : stats.replaced);
+        target.mesh = std::move(replacement);
+        target.bounds = xy_bounds(target.mesh);
       }
       // Input elements not merged: added as they are, unless they lie wholly over existing output
       // or would pass through it (an input that related to an element merged with another one).
@@ -278,10 +303,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
         bool all_overlap = true;
         for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && in_overlap(p);
         const Rect b = xy_bounds(inputs[i]);
-        std::vector<const TriMesh*> near;
-        for (const OutputElement& e : output)
-          if (e.alive && e.bounds.overlaps(b)) near.push_back(&e.mesh);
-        if (all_overlap || collides(inputs[i], near)) {
+        if (all_overlap || collides(inputs[i], neighbours(inputs[i], -1))) {
           ++stats.rejected_inputs;
           continue;
         }

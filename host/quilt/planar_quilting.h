@@ -42,6 +42,7 @@ struct PlanarQuiltOptions {
   //! "one edge length off costs as much as a unit normal difference" at every swatch scale. It
   //! overrides matching.lambda and correspondence.lambda.
   double lambda = 1.0;
+  double partner_distance = 0.5;     //!< merge partners' mean pair distance, in mean edge lengths, at most
   bool cleanup = true;               //!< drop elements that could not be made whole
   int max_patches = 0;               //!< stop after this many patches (0: until done); for inspection
   MatchingOptions matching;
@@ -58,6 +59,7 @@ struct QuiltStats {
   int replaced = 0;           //!< output elements replaced by an input element (kept_in)
   int kept = 0;               //!< input elements that yielded to an output element (kept_out)
   int rejected_inputs = 0;    //!< unrelated input elements that would have collided
+  int refused_merges = 0;     //!< merges whose result would have passed through a neighbour
   int dropped_elements = 0;   //!< removed by the clean-up pass: dropped_open + dropped_intersecting
   int dropped_open = 0;       //!< not closed 2-manifolds although the swatch's elements are
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
