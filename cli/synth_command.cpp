@@ -15,6 +15,7 @@
 #include "device.h"
 #include "error.h"
 #include "mesh/mesh_io.h"
+#include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "progress.h"
 #include "quilt/planar_quilting.h"
@@ -73,8 +74,9 @@ void run_synth(const SynthArgs& args) {
   check_writable(output);
   if (!args.stats.empty()) check_writable(args.stats);
 
-  const TriMesh swatch = args.swatch.empty() ? default_swatch() : read_mesh(args.swatch);
   const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
+  // Oriented here as well as in quilt_plane, so a degenerate swatch is reported by file name.
+  const TriMesh swatch = orient_swatch(args.swatch.empty() ? default_swatch() : read_mesh(args.swatch), swatch_name);
 
   std::string note;
   std::unique_ptr<engine::Device> device = engine::open_device(backend, &note);

@@ -37,7 +37,12 @@ std::unique_ptr<Device> open_device(BackendChoice choice, std::string* note) {
   if (choice == BackendChoice::vulkan) return open_vulkan_device();
   // automatic: any failure to bring Vulkan up is a reason to fall back, not to stop.
   try {
-    return open_vulkan_device();
+    std::unique_ptr<Device> vulkan = open_vulkan_device();
+    if (!vulkan->software_rasterizer()) return vulkan;
+    if (note)
+      *note = "only a software Vulkan device (" + vulkan->name() +
+              "); using the faster CPU back end (--backend vulkan forces it)";
+    return open_cpu_device();
   } catch (const DeviceError& error) {
     if (note) *note = std::string("no usable Vulkan device (") + error.what() + "); using the CPU back end";
     return open_cpu_device();

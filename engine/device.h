@@ -115,6 +115,8 @@ class Device {
   //! of a shader, counted per SIMD vector; kernels with long searches must stay below it (a
   //! single loop whose lanes each count their own iterations is safe) or detect the cut.
   virtual std::uint32_t max_loop_iterations() const = 0;
+  //! True for a Vulkan implementation that runs on the CPU (llvmpipe/lavapipe).
+  virtual bool software_rasterizer() const { return false; }
 
   //! A new host-mapped storage buffer of `bytes` bytes.
   //! \throw DeviceError when the allocation fails or exceeds max_binding_bytes().
@@ -145,8 +147,9 @@ class Device {
   DeviceStats stats_;
 };
 
-//! Opens a device. `automatic` uses Vulkan when a usable device exists and otherwise returns
-//! the CPU back end, setting *note (when non-null) to one line saying why; `vulkan` requires a
+//! Opens a device. `automatic` uses Vulkan when a usable GPU exists and otherwise returns
+//! the CPU back end (also when the only Vulkan device is a software one such as lavapipe, which
+//! runs the same kernels several times slower than the CPU back end), setting *note (when non-null) to one line saying why; `vulkan` requires a
 //! Vulkan device; `cpu` always succeeds. *note is cleared when there is nothing to say.
 //! \throw DeviceError when `vulkan` is chosen and no Vulkan device can be opened (or the build
 //! has no Vulkan back end, MESHQUILT_VULKAN=OFF).

@@ -120,6 +120,7 @@ class VulkanDevice final : public Device {
 
   Backend backend() const override { return Backend::vulkan; }
   std::string name() const override { return properties_.deviceName; }
+  bool software_rasterizer() const override { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   std::size_t max_binding_bytes() const override { return properties_.limits.maxStorageBufferRange; }
   // gallivm's LP_MAX_TGSI_LOOP_ITERATIONS: one counter for every loop of a shader invocation.
   std::uint32_t max_loop_iterations() const override {
