@@ -34,8 +34,8 @@ struct Scenario {
 };
 
 const std::vector<Scenario> kScenarios = {
-    {"wire", "Plane + Wire", 3 * 60.0, 74792, "weave --pattern plain --warps 8 --wefts 8"},
-    {"apple", "Plane + Apple", 3 * 60.0, 321000, "fruit --count 24"},
+    {"wire", "Plane + Wire", 3 * 60.0, 74792, "chainmail --rows 8 --columns 6"},
+    {"apple", "Plane + Apple", 3 * 60.0, 321000, "fruit --columns 5 --rows 5 --subdivisions 2"},
 };
 
 struct Run {

@@ -6,29 +6,10 @@
 #include <tbb/parallel_sort.h>
 
 #include "mesh/topology.h"
+#include "mesh/disjoint_sets.h"
 
 namespace meshquilt {
 namespace {
-
-class DisjointSets {
- public:
-  explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];
-      x = parent_[x];
-    }
-    return x;
-  }
-  void unite(int32_t a, int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int32_t> parent_;
-};
 
 // One undirected edge of one face: the key orders edges, `corner` is the face corner (3f + i)
 // where the edge starts, so both endpoint corners are known.

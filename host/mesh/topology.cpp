@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "mesh/disjoint_sets.h"
 
 namespace meshquilt {
 namespace {
@@ -28,26 +29,6 @@ Bounds bounds_of(const std::vector<Vec3>& points) {
   }
   return b;
 }
-
-class UnionFind {
- public:
-  explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int32_t find(int32_t x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];  // path halving keeps the trees shallow without recursion
-      x = parent_[x];
-    }
-    return x;
-  }
-  void unite(int32_t a, int32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int32_t> parent_;
-};
 
 // Open-addressing map from packed cell key to the newest representative in that cell: several
 // times faster than std::unordered_map on million-vertex meshes (no node allocations).
@@ -164,7 +145,7 @@ TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
 }
 
 std::vector<int32_t> face_components(const TriMesh& mesh, int32_t* count) {
-  UnionFind sets(mesh.positions.size());
+  DisjointSets sets(mesh.positions.size());
   for (const Tri& t : mesh.triangles) {
     sets.unite(t[0], t[1]);
     sets.unite(t[0], t[2]);
