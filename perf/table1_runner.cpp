@@ -6,6 +6,7 @@
 //   table1_runner [--runs N] [--backends cpu,vulkan] [--scenarios wire,apple] [--scale F]
 //
 // --scale multiplies the plane area (0.1 for a quick look).
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -49,6 +50,9 @@ struct Run {
 int spawn(const std::vector<std::string>& argv, long* peak_kib) {
   const pid_t pid = fork();
   if (pid == 0) {
+    // The child's own report lines would interleave with the table.
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0) dup2(null, STDOUT_FILENO);
     std::vector<char*> args;
     for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
