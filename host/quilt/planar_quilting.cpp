@@ -241,13 +241,16 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
     }
 
     {
-      // Deform both sides toward c = (v_out + h_in) / 2 (Eq. 5 and 6).
+      // Deform both sides toward c = (v_out + h_in) / 2 (Eq. 5 and 6), from the partners' pairs.
       StageTimer timer(seconds, "deform");
       std::vector<std::vector<VertexConstraint>> out_constraints(outs.size());
       std::vector<std::vector<FaceConstraint>> in_constraints(inputs.size());
       for (const ElementRelation* r : partners) {
         for (int32_t k : r->pairs) {
           const VertexFacePair& p = corr.pairs[k];
+          // Where one element ends inside the overlap (a yarn's cap), the other's vertices past
+          // that end pair with the cap; pulling them toward it would bend the yarn.
+          if (p.distance > options.partner_distance * mean_edge) continue;
           const Vec3 target = 0.5 * (outs[p.out_element].positions[p.out_vertex] + p.closest);
           out_constraints[p.out_element].push_back({p.out_vertex, target});
           in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
