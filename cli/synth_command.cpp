@@ -118,6 +118,7 @@ void run_synth(const SynthArgs& args) {
       {"yielded_inputs", stats.kept},
       {"rejected_inputs", stats.rejected_inputs},
       {"refused_merges", stats.refused_merges},
+      {"undone_deformations", stats.undone_deformations},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
       {"dropped_intersecting", stats.dropped_intersecting},

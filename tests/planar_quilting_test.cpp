@@ -104,9 +104,7 @@ TEST(PlanarQuilting, WeaveYarnsContinueAcrossSeams) {
   EXPECT_GE(q.closed, 0.98 * q.elements);
   EXPECT_LE(q.intersecting_share, 0.001);
   EXPECT_GT(stats.stitched, 0);
-  // Warps crossing seams where two patches' registrations disagree are still dropped far more
-  // often than the 1% the chain mail meets; the count is reported, and must add up.
-  EXPECT_EQ(stats.dropped_elements, stats.dropped_open + stats.dropped_intersecting);
+  EXPECT_LE(stats.dropped_elements, 0.01 * q.elements);
 }
 
 TEST(PlanarQuilting, ChainMailStaysWholeAndCovers) {

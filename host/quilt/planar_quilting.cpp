@@ -266,11 +266,6 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
 
     {
       StageTimer timer(seconds, "merge");
-      for (size_t o = 0; o < outs.size(); ++o) {
-        OutputElement& e = output[affected[o]];
-        e.mesh = std::move(outs[o]);
-        e.bounds = xy_bounds(e.mesh);
-      }
       // Elements near `mesh` in the output, but for output element `self`.
       const auto neighbours = [&](const TriMesh& mesh, int32_t self) {
         const Rect b = xy_bounds(mesh);
@@ -280,6 +275,17 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
             near.push_back(&output[k].mesh);
         return near;
       };
+      // A deformation that pushes an output element into a neighbour is undone: the element
+      // keeps its shape and the merge works from there.
+      for (size_t o = 0; o < outs.size(); ++o) {
+        OutputElement& e = output[affected[o]];
+        if (outs[o].positions != e.mesh.positions && collides(outs[o], neighbours(outs[o], affected[o]))) {
+          ++stats.undone_deformations;
+          continue;
+        }
+        e.mesh = std::move(outs[o]);
+        e.bounds = xy_bounds(e.mesh);
+      }
       for (const ElementRelation* partner : partners) {
         const ElementRelation& r = *partner;
         OutputElement& target = output[affected[r.out_element]];

@@ -60,6 +60,7 @@ struct QuiltStats {
   int kept = 0;               //!< input elements that yielded to an output element (kept_out)
   int rejected_inputs = 0;    //!< unrelated input elements that would have collided
   int refused_merges = 0;     //!< merges whose result would have passed through a neighbour
+  int undone_deformations = 0;  //!< output deformations undone because they hit a neighbour
   int dropped_elements = 0;   //!< removed by the clean-up pass: dropped_open + dropped_intersecting
   int dropped_open = 0;       //!< not closed 2-manifolds although the swatch's elements are
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
