@@ -1,0 +1,164 @@
+// Geometry matching (Section 2.4, Eq. 1-3): the host's exact cost against a brute force written
+// here, recovery of a known placement, and the same choice on both back ends.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "device.h"
+#include "error.h"
+#include "quilt/geometry_matching.h"
+
+namespace meshquilt {
+namespace {
+
+// Scattered small tetrahedra at random positions and orientations: a swatch with no symmetry.
+TriMesh random_swatch(std::mt19937_64& rng, int count) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  TriMesh mesh;
+  for (int k = 0; k < count; ++k) {
+    const Vec3 centre(8.0 * u(rng), 6.0 * u(rng), 0.3 * u(rng));
+    const int32_t base = static_cast<int32_t>(mesh.positions.size());
+    for (int v = 0; v < 4; ++v)
+      mesh.positions.push_back(centre + 0.4 * Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    for (const Tri& t : {Tri{0, 2, 1}, Tri{0, 1, 3}, Tri{1, 2, 3}, Tri{0, 3, 2}})
+      mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+  }
+  return mesh;
+}
+
+// Distance from p to triangle abc: the plane when p projects inside, else the nearest edge.
+double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = glm::cross(b - a, c - a);
+  const double area2 = glm::dot(n, n);
+  if (area2 > 0.0) {
+    const Vec3 q = p - n * (glm::dot(p - a, n) / area2);
+    const double u = glm::dot(glm::cross(c - b, q - b), n), v = glm::dot(glm::cross(a - c, q - c), n),
+                 w = glm::dot(glm::cross(b - a, q - a), n);
+    if (u >= 0.0 && v >= 0.0 && w >= 0.0) return glm::length(p - q);
+  }
+  auto segment = [&](const Vec3& s, const Vec3& e) {
+    const double t = glm::clamp(glm::dot(p - s, e - s) / std::max(glm::dot(e - s, e - s), 1e-300), 0.0, 1.0);
+    return glm::length(p - (s + t * (e - s)));
+  };
+  return std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
+double brute_force_cost(const TriMesh& swatch, const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                        const glm::dvec2& t, double lambda) {
+  double total = 0.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Tri& f : swatch.triangles) {
+      const Vec3 &a = swatch.positions[f[0]], &b = swatch.positions[f[1]], &c = swatch.positions[f[2]];
+      const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
+      const double d = distance_to_triangle(points[i] - Vec3(t, 0.0), a, b, c);
+      best = std::min(best, (1.0 + lambda * d) * (1.0 + glm::length(normals[i] - n)));
+    }
+    total += best;
+  }
+  return total;
+}
+
+TEST(GeometryMatching, ExactCostIsEquation3) {
+  std::mt19937_64 rng(11);
+  const TriMesh swatch = random_swatch(rng, 30);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  MatchingOptions options;
+  options.lambda = 2.5;
+  const GeometryMatcher matcher(*device, swatch, 0.5, options);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> points, normals;
+  for (int k = 0; k < 200; ++k) {
+    points.emplace_back(4.0 + 4.0 * u(rng), 3.0 + 3.0 * u(rng), 0.3 * u(rng));
+    normals.push_back(glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0, 0, 0.1)));
+  }
+  for (const glm::dvec2 t : {glm::dvec2(0.0), glm::dvec2(0.7, -0.3), glm::dvec2(-1.5, 2.0)})
+    EXPECT_NEAR(matcher.exact_cost(points, normals, t), brute_force_cost(swatch, points, normals, t, 2.5), 1e-9);
+}
+
+// Output points copied from the swatch moved by a known translation: the match finds it.
+std::vector<glm::dvec2> grid_candidates(double cell) {
+  std::vector<glm::dvec2> candidates;
+  for (int y = -4; y <= 4; ++y)
+    for (int x = -4; x <= 4; ++x) candidates.emplace_back(x * cell, y * cell);
+  return candidates;
+}
+
+void copied_points(const TriMesh& swatch, const glm::dvec2& t, std::vector<Vec3>* points, std::vector<Vec3>* normals) {
+  std::vector<Vec3> n(swatch.num_vertices(), Vec3(0.0));
+  for (const Tri& f : swatch.triangles)
+    for (int k = 0; k < 3; ++k)
+      n[f[k]] += glm::cross(swatch.positions[f[1]] - swatch.positions[f[0]], swatch.positions[f[2]] - swatch.positions[f[0]]);
+  for (size_t v = 0; v < swatch.num_vertices(); ++v) {
+    const Vec3 p = swatch.positions[v] + Vec3(t, 0.0);
+    if (p.x < 2.0 || p.x > 6.0 || p.y < 1.5 || p.y > 4.5) continue;  // a sub-patch
+    points->push_back(p);
+    normals->push_back(glm::normalize(n[v]));
+  }
+}
+
+TEST(GeometryMatching, FindsTheTranslationTheOutputWasCopiedWith) {
+  std::mt19937_64 rng(5);
+  const TriMesh swatch = random_swatch(rng, 60);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  const double cell = 0.25;
+  const GeometryMatcher matcher(*device, swatch, cell);
+  // On the grid, and off it by a fraction of a cell (found by the continuous refinement).
+  for (const glm::dvec2 truth : {glm::dvec2(2 * cell, -cell), glm::dvec2(0.37 * cell, 1.62 * cell)}) {
+    std::vector<Vec3> points, normals;
+    copied_points(swatch, truth, &points, &normals);
+    ASSERT_GT(points.size(), 20u);
+    std::mt19937_64 choice(1);
+    const MatchResult m = matcher.match(points, normals, grid_candidates(cell), choice);
+    EXPECT_NEAR(m.translation.x, truth.x, 1e-4);
+    EXPECT_NEAR(m.translation.y, truth.y, 1e-4);
+    EXPECT_NEAR(m.cost, matcher.exact_cost(points, normals, m.translation), 1e-9);
+    EXPECT_GE(m.rescored, 1);
+  }
+}
+
+TEST(GeometryMatching, EmptySubPatchTakesASeededRandomCandidate) {
+  std::mt19937_64 rng(3);
+  const TriMesh swatch = random_swatch(rng, 10);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  const GeometryMatcher matcher(*device, swatch, 0.25);
+  const auto candidates = grid_candidates(0.25);
+  std::mt19937_64 a(9), b(9);
+  const glm::dvec2 first = matcher.match({}, {}, candidates, a).translation;
+  EXPECT_EQ(first, matcher.match({}, {}, candidates, b).translation);
+  EXPECT_NE(std::find(candidates.begin(), candidates.end(), first), candidates.end());
+}
+
+TEST(GeometryMatching, BothBackEndsChooseAlike) {
+  std::unique_ptr<engine::Device> vulkan;
+  try {
+    vulkan = engine::open_device(engine::BackendChoice::vulkan);
+  } catch (const DeviceError&) {
+    if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true") FAIL() << "no Vulkan device under CI";
+    GTEST_SKIP() << "no Vulkan device";
+  }
+  auto cpu = engine::open_device(engine::BackendChoice::cpu);
+  std::mt19937_64 rng(21);
+  const TriMesh swatch = random_swatch(rng, 60);
+  const GeometryMatcher on_cpu(*cpu, swatch, 0.25), on_vulkan(*vulkan, swatch, 0.25);
+  for (int trial = 0; trial < 4; ++trial) {
+    // Noisy copies, so that several candidates are close.
+    std::vector<Vec3> points, normals;
+    copied_points(swatch, glm::dvec2(0.1 * trial, -0.05 * trial), &points, &normals);
+    std::normal_distribution<double> noise(0.0, 0.02);
+    for (Vec3& p : points) p += Vec3(noise(rng), noise(rng), noise(rng));
+    std::mt19937_64 a(trial), b(trial);
+    const MatchResult x = on_cpu.match(points, normals, grid_candidates(0.25), a);
+    const MatchResult y = on_vulkan.match(points, normals, grid_candidates(0.25), b);
+    EXPECT_EQ(x.translation, y.translation);
+    EXPECT_EQ(x.cost, y.cost);
+  }
+}
+
+}  // namespace
+}  // namespace meshquilt
