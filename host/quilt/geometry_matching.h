@@ -46,8 +46,9 @@ class GeometryMatcher {
                   const MatchingOptions& options = {});
   ~GeometryMatcher();
 
-  //! Chooses among `candidates` (translations of the swatch) the one minimizing Eq. 3 over the
-  //! output `points` with unit `normals` (#P each). With no points, a uniformly random candidate.
+  //! Chooses among `candidates` (translations of the swatch on a grid of cell_size) the one
+  //! minimizing Eq. 3 over the output `points` with unit `normals` (#P each), refined
+  //! continuously within one cell. With no points, a seeded random candidate.
   //! \pre candidates is not empty.
   MatchResult match(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                     const std::vector<glm::dvec2>& candidates, std::mt19937_64& rng) const;
