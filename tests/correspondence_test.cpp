@@ -1,4 +1,5 @@
 #include "quilt/correspondence.h"
+#include "support/bumpy_sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -21,34 +22,8 @@ namespace {
 
 // ---- fixtures -------------------------------------------------------------------------------
 
-// A closed, bumpy UV sphere (outward normals, or inward when `flip`).
 TriMesh sphere(int rings, int segments, double radius, Vec3 centre, uint32_t seed, bool flip = false) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.08, 0.08);
-  TriMesh m;
-  m.positions.push_back(centre + Vec3(0, 0, radius));
-  for (int r = 1; r <= rings; ++r) {
-    const double theta = M_PI * r / (rings + 1);
-    for (int s = 0; s < segments; ++s) {
-      const double phi = 2 * M_PI * (s + 0.3 * r) / segments;
-      const double rr = radius * (1 + jitter(rng));
-      m.positions.push_back(centre + rr * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                               std::cos(theta)));
-    }
-  }
-  m.positions.push_back(centre + Vec3(0, 0, -radius));
-  const int south = int(m.positions.size()) - 1;
-  auto at = [&](int r, int s) { return 1 + (r - 1) * segments + (s % segments); };
-  for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s), at(1, s + 1)});
-  for (int r = 1; r < rings; ++r)
-    for (int s = 0; s < segments; ++s) {
-      m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
-      m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-    }
-  for (int s = 0; s < segments; ++s) m.triangles.push_back({south, at(rings, s + 1), at(rings, s)});
-  if (flip)
-    for (Tri& t : m.triangles) std::swap(t[1], t[2]);
-  return m;
+  return test::bumpy_sphere(rings, segments, radius, centre, seed, 0.08, flip);
 }
 
 // A flat n x n grid of unit cells at height z, facing +z (or -z when `down`).

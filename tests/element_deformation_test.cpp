@@ -1,4 +1,5 @@
 #include "quilt/element_deformation.h"
+#include "support/bumpy_sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -18,32 +19,8 @@
 namespace meshquilt {
 namespace {
 
-// A closed UV sphere: poles plus rings x segments, slightly perturbed so nothing is symmetric.
 TriMesh sphere(int rings, int segments, double radius, Vec3 centre, uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
-  TriMesh m;
-  m.positions.push_back(centre + Vec3(0, 0, radius));
-  for (int r = 1; r <= rings; ++r) {
-    const double theta = M_PI * r / (rings + 1);
-    for (int s = 0; s < segments; ++s) {
-      const double phi = 2 * M_PI * s / segments;
-      const double rr = radius * (1 + jitter(rng));
-      m.positions.push_back(centre + rr * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                               std::cos(theta)));
-    }
-  }
-  m.positions.push_back(centre + Vec3(0, 0, -radius));
-  const int south = int(m.positions.size()) - 1;
-  auto at = [&](int r, int s) { return 1 + (r - 1) * segments + (s % segments); };
-  for (int s = 0; s < segments; ++s) m.triangles.push_back({0, at(1, s), at(1, s + 1)});
-  for (int r = 1; r < rings; ++r)
-    for (int s = 0; s < segments; ++s) {
-      m.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
-      m.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-    }
-  for (int s = 0; s < segments; ++s) m.triangles.push_back({south, at(rings, s + 1), at(rings, s)});
-  return m;
+  return test::bumpy_sphere(rings, segments, radius, centre, seed, 0.05);
 }
 
 // An open n x n grid patch with a bumpy height.
