@@ -1,5 +1,4 @@
 #include "quilt/correspondence.h"
-#include "support/bumpy_sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +15,7 @@
 
 #include "error.h"
 #include "mesh/mesh_io.h"
+#include "support/bumpy_sphere.h"
 
 namespace meshquilt {
 namespace {

@@ -1,5 +1,4 @@
 #include "quilt/element_deformation.h"
-#include "support/bumpy_sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +14,7 @@
 
 #include "error.h"
 #include "mesh/mesh_io.h"
+#include "support/bumpy_sphere.h"
 
 namespace meshquilt {
 namespace {
