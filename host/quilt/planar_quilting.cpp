@@ -12,6 +12,7 @@
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "quilt/seed_finding.h"
+#include "quilt/stitching.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -49,19 +50,6 @@ std::vector<Vec3> vertex_normals(const TriMesh& mesh) {
     n = len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0);
   }
   return normals;
-}
-
-// Closed 2-manifold: every undirected edge used by exactly two faces, in opposite directions.
-bool is_closed_manifold(const TriMesh& mesh) {
-  std::map<std::pair<int32_t, int32_t>, int> directed;
-  for (const Tri& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  for (const auto& [edge, count] : directed) {
-    if (count != 1) return false;
-    const auto twin = directed.find({edge.second, edge.first});
-    if (twin == directed.end() || twin->second != 1) return false;
-  }
-  return !mesh.triangles.empty();
 }
 
 TriMesh translated(const TriMesh& mesh, const glm::dvec2& t) {
@@ -127,7 +115,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
 
   const std::vector<TriMesh> swatch_elements = split_elements(swatch);
   bool swatch_closed = true;
-  for (const TriMesh& e : swatch_elements) swatch_closed = swatch_closed && is_closed_manifold(e);
+  for (const TriMesh& e : swatch_elements) swatch_closed = swatch_closed && inspect_surface(e).closed_manifold();
 
   double edge_sum = 0.0;
   for (const Tri& t : swatch.triangles)
@@ -344,7 +332,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device,
       if (output[i].alive) alive.push_back(i);
     if (options.cleanup) {
       for (size_t i : alive) {
-        if (swatch_closed && !is_closed_manifold(output[i].mesh)) {
+        if (swatch_closed && !inspect_surface(output[i].mesh).closed_manifold()) {
           output[i].alive = false;
           ++stats.dropped_open;
         }
