@@ -61,11 +61,18 @@ TriMesh translated(const TriMesh& mesh, const glm::dvec2& t) {
 // True when any face of `candidate` intersects a face of one of `others`.
 bool collides(const TriMesh& candidate, const std::vector<const TriMesh*>& others) {
   if (others.empty()) return false;
-  std::vector<TriMesh> parts;
-  parts.reserve(others.size() + 1);
-  parts.push_back(candidate);
-  for (const TriMesh* o : others) parts.push_back(*o);
-  const TriMesh joined = join_elements(parts);
+  // One mesh of all parts (element id = part, the candidate is 0), built in place.
+  TriMesh joined;
+  const auto append = [&](const TriMesh& mesh, int32_t part) {
+    const int32_t base = static_cast<int32_t>(joined.positions.size());
+    joined.positions.insert(joined.positions.end(), mesh.positions.begin(), mesh.positions.end());
+    for (const Tri& t : mesh.triangles) {
+      joined.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+      joined.elements.push_back(part);
+    }
+  };
+  append(candidate, 0);
+  for (size_t k = 0; k < others.size(); ++k) append(*others[k], static_cast<int32_t>(k + 1));
   const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
   for (const auto& [a, b] : pairs)
     if (joined.elements[a] == 0 || joined.elements[b] == 0) return true;
