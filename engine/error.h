@@ -2,6 +2,7 @@
 //! Typed errors of meshquilt. Library code throws them where a problem is found; only the CLI's
 //! main catches them and turns them into one line on stderr and the exit code below.
 
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +20,7 @@ enum class ExitCode : int {
   write_failed = 7,    //!< output could not be written
   device = 8,          //!< requested compute device missing or failing
   solver = 9,          //!< a numerical solve failed
+  interrupted = 10,    //!< stopped by SIGINT/SIGTERM or a time limit through a CancelToken
 };
 
 //! Base of every meshquilt error; carries its exit code.
@@ -54,6 +56,27 @@ class DeviceError : public Error {
 class SolverError : public Error {
  public:
   explicit SolverError(const std::string& message) : Error(ExitCode::solver, message) {}
+};
+
+//! The run was cancelled (Ctrl-C, SIGTERM, a batch's time limit) through a CancelToken.
+class Cancelled : public Error {
+ public:
+  Cancelled() : Error(ExitCode::interrupted, "interrupted") {}
+};
+
+//! Shared flag that long work polls between stages and inside long loops; setting it from a
+//! signal handler is safe (a lock-free atomic).
+class CancelToken {
+ public:
+  void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
+  bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+  //! \throw Cancelled once cancel() has been called.
+  void check() const {
+    if (cancelled()) throw Cancelled();
+  }
+
+ private:
+  std::atomic<bool> cancelled_{false};
 };
 
 }  // namespace meshquilt
