@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include "error.h"
+#include "mesh/measures.h"
 #include "spatial/exact_predicates.h"
 #include "spatial/face_bvh.h"
 
@@ -235,20 +236,12 @@ struct JoinedInput {
   }
 };
 
-//! Area-weighted unit vertex normals (zero where no face, or only degenerate ones, meet) and
-//! whether any triangle uses each vertex.
-void vertex_normals(const TriMesh& mesh, std::vector<Vec3>& normals, std::vector<uint8_t>& used) {
-  normals.assign(mesh.num_vertices(), Vec3(0.0));
-  used.assign(mesh.num_vertices(), 0);
-  for (const Tri& t : mesh.triangles) {
-    // |cross| is twice the area, so summing cross products weights by area.
-    const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
-    for (int32_t v : t) normals[v] += n, used[v] = 1;
-  }
-  for (Vec3& n : normals) {
-    const double len = glm::length(n);
-    n = len > 0.0 ? n / len : Vec3(0.0);
-  }
+//! #V: whether any triangle uses each vertex (a vertex no face uses has no normal to compare).
+std::vector<uint8_t> used_vertices(const TriMesh& mesh) {
+  std::vector<uint8_t> used(mesh.num_vertices(), 0);
+  for (const Tri& t : mesh.triangles)
+    for (int32_t v : t) used[v] = 1;
+  return used;
 }
 
 struct Query {
@@ -296,12 +289,11 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
 
   // Output vertices in the overlap, with their normals (only elements that have some).
   std::vector<Query> queries;
-  std::vector<Vec3> normals;
-  std::vector<uint8_t> used;
   for (size_t e = 0; e < out_elements.size(); ++e) {
     const TriMesh& mesh = out_elements[e];
     check_indices(mesh, "output", e);
-    vertex_normals(mesh, normals, used);
+    const std::vector<Vec3> normals = vertex_normals(mesh, Vec3(0.0));
+    const std::vector<uint8_t> used = used_vertices(mesh);
     for (size_t v = 0; v < mesh.num_vertices(); ++v) {
       if (!used[v] || !in_overlap(mesh.positions[v])) continue;
       queries.push_back({static_cast<int32_t>(e), static_cast<int32_t>(v), mesh.positions[v], normals[v]});

@@ -226,14 +226,6 @@ std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh) {
   return nb;
 }
 
-double mean_edge_length(const TriMesh& mesh) {
-  if (mesh.num_faces() == 0) return 0.0;
-  double sum = 0.0;
-  for (const Tri& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) sum += glm::length(mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]);
-  return sum / (3.0 * static_cast<double>(mesh.num_faces()));
-}
-
 bool cut_loops(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>& neighbors,
                const std::vector<uint8_t>& keep, std::vector<CutLoop>& loops, std::string* why) {
   loops.clear();

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/measures.h"  // mean_edge_length, formerly declared here
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
@@ -15,9 +16,6 @@ namespace meshquilt {
 //! Face adjacency across edges: #F x 3, entry k is the face across edge (v[k], v[k+1]); -1 for a
 //! boundary edge, -2 for an edge shared by more than two faces (non-manifold).
 std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh);
-
-//! Mean edge length over all face edges (0 for a mesh without faces).
-double mean_edge_length(const TriMesh& mesh);
 
 //! A closed loop of cut-boundary edges of a kept face set.
 //! vertices  #K vertex indices in order; edge k is vertices[k] -> vertices[(k+1) % K]

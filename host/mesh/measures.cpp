@@ -1,0 +1,31 @@
+#include "mesh/measures.h"
+
+#include <glm/geometric.hpp>
+
+namespace meshquilt {
+
+double mean_edge_length(const TriMesh& mesh) {
+  if (mesh.num_faces() == 0) return 0.0;
+  double sum = 0.0;
+  for (const Tri& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) sum += glm::length(mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]);
+  return sum / (3.0 * static_cast<double>(mesh.num_faces()));
+}
+
+std::vector<Vec3> vertex_normals(const TriMesh& mesh, const Vec3& without_area) {
+  std::vector<Vec3> normals(mesh.num_vertices(), Vec3(0.0));
+  for (const Tri& t : mesh.triangles) {
+    // |cross| is twice the area, so summing cross products weights by area.
+    const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
+  }
+  for (Vec3& n : normals) {
+    const double len = glm::length(n);
+    n = len > 0.0 ? n / len : without_area;
+  }
+  return normals;
+}
+
+std::vector<Vec3> vertex_normals(const TriMesh& mesh) { return vertex_normals(mesh, Vec3(0.0, 0.0, 1.0)); }
+
+}  // namespace meshquilt
