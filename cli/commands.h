@@ -9,5 +9,6 @@ namespace meshquilt::cli {
 void add_swatch_command(CLI::App& app);
 void add_inspect_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
+void add_render_command(CLI::App& app);
 
 }  // namespace meshquilt::cli

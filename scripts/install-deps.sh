@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-tools
   glslang-tools glslang-dev spirv-tools
-  libembree-dev libtbb-dev libeigen3-dev libglm-dev libopenmesh-dev
+  libembree-dev libpng-dev libtbb-dev libeigen3-dev libglm-dev libopenmesh-dev
   libtet1.5-dev libboost-graph-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3

@@ -129,9 +129,37 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
   o->upper_z = round_up(b.hi.z);
 }
 
-// Point queries on user geometry call the geometry's point query function; intersection is
-// never requested, but Embree requires the callbacks to be set.
-void unused_intersect(const RTCIntersectFunctionNArguments*) {}
+// State of one ray cast. Embree passes the context pointer to the intersect callback, so the
+// context comes first and the callback casts back to the whole struct.
+struct RayState {
+  RTCIntersectContext context;
+  const TriMesh* mesh = nullptr;
+  Vec3 origin{0.0}, direction{0.0};
+  double max_distance = std::numeric_limits<double>::infinity();
+  double slack = 0.0;  // ray parameter padding for float rounding of the ray and the boxes
+  RayHit best;
+};
+
+// Exact double test per candidate; Embree's float tfar only prunes, so it is shrunk to the best
+// hit plus slack (a face at the same t with a lower index must still be visited).
+void ray_intersect_callback(const RTCIntersectFunctionNArguments* args) {
+  auto* q = reinterpret_cast<RayState*>(args->context);
+  const auto f = static_cast<int32_t>(args->primID);
+  const Tri& t = q->mesh->triangles[f];
+  const double distance = ray_triangle(q->origin, q->direction, q->mesh->positions[t[0]],
+                                      q->mesh->positions[t[1]], q->mesh->positions[t[2]]);
+  if (!(distance <= q->max_distance)) return;
+  if (distance < q->best.distance || (distance == q->best.distance && f < q->best.face)) {
+    q->best = {f, distance};
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    const float tfar = padded_radius(distance, q->slack);
+    for (unsigned i = 0; i < args->N; ++i) {
+      if (args->valid[i] && tfar < RTCRayN_tfar(rays, args->N, i)) RTCRayN_tfar(rays, args->N, i) = tfar;
+    }
+  }
+}
+
+// Occlusion queries are never made, but Embree requires the callback to be set.
 void unused_occluded(const RTCOccludedFunctionNArguments*) {}
 
 }  // namespace
@@ -175,6 +203,23 @@ struct FaceBvh::Impl {
     if (device) rtcReleaseDevice(device);
   }
 };
+
+double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b, const Vec3& c) {
+  constexpr double kMiss = std::numeric_limits<double>::infinity();
+  const Vec3 ab = b - a, ac = c - a;
+  const Vec3 p = glm::cross(direction, ac);
+  const double det = glm::dot(ab, p);
+  if (det == 0.0 || !std::isfinite(det)) return kMiss;
+  const double inv = 1.0 / det;
+  const Vec3 s = origin - a;
+  const double u = glm::dot(s, p) * inv;
+  if (u < 0.0 || u > 1.0) return kMiss;
+  const Vec3 q = glm::cross(s, ab);
+  const double v = glm::dot(direction, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return kMiss;
+  const double t = glm::dot(ac, q) * inv;
+  return t > 0.0 ? t : kMiss;
+}
 
 ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   // Ericson, Real-Time Collision Detection, 5.1.5: find the Voronoi region of p.
@@ -257,7 +302,7 @@ FaceBvh::FaceBvh(const TriMesh& mesh, BvhQuality quality) : mesh_(mesh), impl_(s
   for (size_t f = 0; f < mesh.num_faces(); ++f) impl_->boxes[f] = face_box(mesh, static_cast<int32_t>(f));
   rtcSetGeometryUserData(geometry, &impl_->boxes);
   rtcSetGeometryBoundsFunction(geometry, &bounds_callback, nullptr);
-  rtcSetGeometryIntersectFunction(geometry, &unused_intersect);
+  rtcSetGeometryIntersectFunction(geometry, &ray_intersect_callback);
   rtcSetGeometryOccludedFunction(geometry, &unused_occluded);
   rtcCommitGeometry(geometry);
   rtcAttachGeometry(impl_->scene, geometry);
@@ -310,6 +355,40 @@ ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(co
     impl_->check("point query");
   }
   if (best_cost) *best_cost = q.best_cost;
+  return q.best;
+}
+
+RayHit FaceBvh::ray_cast(const Vec3& origin, const Vec3& direction, double max_distance) const {
+  RayState q;
+  rtcInitIntersectContext(&q.context);
+  q.mesh = &mesh_;
+  q.origin = origin;
+  q.direction = direction;
+  q.max_distance = max_distance;
+  if (mesh_.num_faces() == 0) return q.best;
+  // Rounding the ray to float moves it by about kRelativeSlack x (|origin| + t |direction|);
+  // the slack, in units of t, covers that for every t up to the scene's size.
+  const double length = glm::length(direction);
+  const double scale = std::max(std::abs(origin.x), std::max(std::abs(origin.y), std::abs(origin.z)));
+  q.slack = (impl_->slack + kRelativeSlack * scale) / length;
+  RTCRayHit rayhit;
+  rayhit.ray.org_x = static_cast<float>(origin.x);
+  rayhit.ray.org_y = static_cast<float>(origin.y);
+  rayhit.ray.org_z = static_cast<float>(origin.z);
+  rayhit.ray.dir_x = static_cast<float>(direction.x);
+  rayhit.ray.dir_y = static_cast<float>(direction.y);
+  rayhit.ray.dir_z = static_cast<float>(direction.z);
+  rayhit.ray.tnear = 0.0f;
+  rayhit.ray.tfar = padded_radius(max_distance, q.slack);  // the same padding, infinity kept
+  rayhit.ray.time = 0.0f;
+  rayhit.ray.mask = 0xFFFFFFFFu;
+  rayhit.ray.id = 0;
+  rayhit.ray.flags = 0;
+  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &q.context, &rayhit);
+  impl_->check("ray cast");
   return q.best;
 }
 

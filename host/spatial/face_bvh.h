@@ -21,6 +21,17 @@ struct ClosestPoint {
   double distance = std::numeric_limits<double>::infinity();
 };
 
+//! The face a ray meets first and where along the ray.
+struct RayHit {
+  int32_t face = -1;  //!< -1: the ray meets no face within its range
+  double distance = std::numeric_limits<double>::infinity();  //!< ray parameter t of the hit
+};
+
+//! Where the ray origin + t * direction meets triangle (a, b, c) for t > 0, two-sided
+//! (Moller-Trumbore in double; points on an edge count as inside, a ray in the triangle's plane
+//! misses). Returns t, or +infinity on a miss.
+double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b, const Vec3& c);
+
 //! Closest point on triangle (a, b, c) to p, exact in double (Ericson's region test).
 ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
@@ -53,6 +64,15 @@ class FaceBvh {
                              const std::function<double(const ClosestPoint&)>& cost,
                              const std::function<double(double best_cost)>& radius_for,
                              double* best_cost) const;
+
+  //! The first face met by the ray origin + t * direction, 0 < t <= max_distance, both sides of a
+  //! face counting; `distance` is t (the Euclidean distance when direction has unit length).
+  //! Each candidate is tested exactly in double (ray_triangle); ties go to the lower face index.
+  //! Embree's float traversal may still skip a face that the ray only grazes within float
+  //! rounding of its bounding box, which for rendering can only swap an edge pixel's face with
+  //! its neighbour. \pre direction is not zero. \throw SolverError when Embree reports an error.
+  RayHit ray_cast(const Vec3& origin, const Vec3& direction,
+                  double max_distance = std::numeric_limits<double>::infinity()) const;
 
   //! Faces whose bounding boxes overlap the box [lo, hi] (appended to `faces`, unordered).
   void faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>& faces) const;

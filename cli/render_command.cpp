@@ -1,0 +1,110 @@
+// `meshquilt render MESH -o OUT.png [--view V] [--mode M] [--size WxH]`: a preview image.
+#include "render_command.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <memory>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "error.h"
+#include "mesh/mesh_io.h"
+#include "render/png_encoding.h"
+
+namespace meshquilt::cli {
+namespace {
+
+struct RenderArgs {
+  std::string mesh;
+  std::string output;
+  std::string view = "oblique";
+  std::string mode = "shaded";
+  std::string size = "1024x768";
+};
+
+void check_png_extension(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".png")
+    throw IoError(ExitCode::unknown_format, file.string() + ": unknown image format (use .png)");
+}
+
+bool parse_side(const std::string& text, int* side) {
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, *side);
+  return ec == std::errc() && ptr == end && !text.empty();
+}
+
+void run_render(const RenderArgs& args) {
+  RenderOptions options;
+  parse_image_size(args.size, &options);
+  options.view = parse_view(args.view);
+  options.mode = parse_render_mode(args.mode);
+  const std::filesystem::path output(args.output);
+  check_png_extension(output);
+  check_writable(output);
+  const TriMesh mesh = read_mesh(args.mesh);
+  write_preview(mesh, output, options);
+  std::printf("wrote %s: %dx%d, %zu faces, %s view, %s\n", output.string().c_str(), options.width,
+              options.height, mesh.num_faces(), args.view.c_str(), args.mode.c_str());
+}
+
+}  // namespace
+
+void write_preview(const TriMesh& mesh, const std::filesystem::path& png, const RenderOptions& options) {
+  check_png_extension(png);
+  check_writable(png);
+  write_text_atomic(png, encode_png(render_mesh(mesh, options)));
+}
+
+void parse_image_size(const std::string& text, RenderOptions* options) {
+  const size_t x = text.find_first_of("xX");
+  int width = 0, height = 0;
+  if (x == std::string::npos || !parse_side(text.substr(0, x), &width) ||
+      !parse_side(text.substr(x + 1), &height))
+    throw InputError("--size: expected WxH in pixels (e.g. 1024x768), got '" + text + "'",
+                     ExitCode::invalid_option);
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
+    throw InputError(
+        "--size " + text + ": each side must be 1 to " + std::to_string(kMaxImageSide) + " pixels",
+        ExitCode::invalid_option);
+  options->width = width;
+  options->height = height;
+}
+
+View parse_view(const std::string& text) {
+  if (text == "top") return View::top;
+  if (text == "oblique") return View::oblique;
+  if (text == "front") return View::front;
+  if (text == "side") return View::side;
+  throw InputError("--view: expected top, oblique, front or side, got '" + text + "'",
+                   ExitCode::invalid_option);
+}
+
+RenderMode parse_render_mode(const std::string& text) {
+  if (text == "shaded") return RenderMode::shaded;
+  if (text == "elements") return RenderMode::elements;
+  throw InputError("--mode: expected shaded or elements, got '" + text + "'", ExitCode::invalid_option);
+}
+
+void add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "render",
+      "Write a preview PNG of a mesh: orthographic, ray cast on the CPU, framed on its bounding box");
+  cmd->add_option("MESH", args->mesh, "mesh to render (.obj .ply .off .stl)")->required();
+  cmd->add_option("-o,--output", args->output, "output image (.png)")->required();
+  cmd->add_option("--view", args->view,
+                  "top|oblique|front|side (oblique: 35 degrees down from the front right)")
+      ->capture_default_str();
+  cmd->add_option("--mode", args->mode,
+                  "shaded: grey-blue, lightly tinted per element; elements: one flat colour per element")
+      ->capture_default_str();
+  cmd->add_option("--size", args->size, "image size WxH in pixels, each side at most 8192")
+      ->capture_default_str();
+  cmd->callback([args] { run_render(*args); });
+}
+
+}  // namespace meshquilt::cli

@@ -1,0 +1,47 @@
+#pragma once
+//! A preview image of a mesh: orthographic rays cast through Embree (spatial/face_bvh.h), each
+//! hit shaded with Lambert's law under a key light and a headlight plus ambient light, on a
+//! light background. No GPU and no display are needed.
+
+#include "mesh/tri_mesh.h"
+#include "render/camera_framing.h"
+#include "render/rgb_image.h"
+
+namespace meshquilt {
+
+//! What the colours show.
+enum class RenderMode {
+  shaded,    //!< a neutral grey-blue, lightly tinted per element, so shape reads first
+  elements,  //!< each element in its own flat colour (element_palette.h), lightly shaded
+};
+
+//! Largest accepted image side, in pixels.
+inline constexpr int kMaxImageSide = 8192;
+
+struct RenderOptions {
+  int width = 1024;           //!< image width in pixels, 1..kMaxImageSide
+  int height = 768;           //!< image height in pixels, 1..kMaxImageSide
+  View view = View::oblique;  //!< camera direction (camera_framing.h)
+  RenderMode mode = RenderMode::shaded;
+  int samples = 2;                 //!< rays per pixel along each side (2: 4 rays, smoothed
+                                   //!< edges; 1: one ray through each pixel centre), 1..4
+  double margin = 0.05;            //!< empty share of the width (height) left at each side
+  Rgb8 background{244, 245, 247};  //!< colour where no face is hit (lighter than any hit)
+};
+
+//! \throw InputError(invalid_option) naming `--size WxH` when a side is outside
+//!        1..kMaxImageSide, or naming the option when samples is outside 1..4 or margin outside
+//!        [0, 0.45].
+void validate_render_options(const RenderOptions& options);
+
+//! Renders `mesh` framed by its bounding box (frame_box) in options.width x options.height
+//! pixels. Faces are flat shaded and two-sided (a face seen from behind is lit as if seen from
+//! the front). Elements come from mesh.elements, or connected components when it is empty
+//! (face_element_ids). Rows are rendered in parallel; the image does not depend on the thread
+//! count. Channels of a hit are capped at 240, so with the default background a pixel whose
+//! rays all hit faces never takes the background colour.
+//! \throw InputError(invalid_mesh) when the mesh has no faces; InputError(invalid_option) as
+//!        validate_render_options; DeviceError/SolverError from Embree.
+RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options = {});
+
+}  // namespace meshquilt
