@@ -18,6 +18,8 @@
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "progress.h"
+#include "resource_limits.h"
+#include "signals.h"
 #include "quilt/planar_quilting.h"
 #include "default_swatch.h"
 
@@ -77,6 +79,7 @@ void run_synth(const SynthArgs& args) {
   const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
   // Oriented here as well as in quilt_plane, so a degenerate swatch is reported by file name.
   const TriMesh swatch = orient_swatch(args.swatch.empty() ? default_swatch() : read_mesh(args.swatch), swatch_name);
+  check_synth_memory(swatch, width, height);
 
   std::string note;
   std::unique_ptr<engine::Device> device = engine::open_device(backend, &note);
@@ -90,12 +93,16 @@ void run_synth(const SynthArgs& args) {
   options.cells_across_swatch = args.cells;
   options.max_patches = args.max_patches;
   options.cleanup = args.cleanup;
-  options.progress = [&](const QuiltProgress& p) { progress.update(p.processed_cells, p.total_cells); };
+  options.progress = [&](const QuiltProgress& p) {
+    check_interrupted();  // stops after the current patch until the scheduler polls options.cancel
+    progress.update(p.processed_cells, p.total_cells);
+  };
   QuiltStats stats;
   const TriMesh result = quilt_plane(swatch, *device, options, &stats);
 
   const auto write_start = Clock::now();
-  write_mesh(result, output);
+  check_interrupted();
+  write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
   stats.stage_seconds["write"] = std::chrono::duration<double>(Clock::now() - write_start).count();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
@@ -113,12 +120,12 @@ void run_synth(const SynthArgs& args) {
       {"seed", args.seed},
       {"plane", {width, height}},
       {"patches", stats.patches},
-      {"stitched_pairs", stats.stitched},
-      {"replaced_elements", stats.replaced},
-      {"yielded_inputs", stats.kept},
-      {"rejected_inputs", stats.rejected_inputs},
-      {"refused_merges", stats.refused_merges},
-      {"undone_deformations", stats.undone_deformations},
+      {"stitched_pairs", stats.merges.stitched},
+      {"replaced_elements", stats.merges.replaced},
+      {"yielded_inputs", stats.merges.kept},
+      {"rejected_inputs", stats.merges.rejected_inputs},
+      {"refused_merges", stats.merges.refused_merges},
+      {"undone_deformations", stats.merges.undone_deformations},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
       {"dropped_intersecting", stats.dropped_intersecting},
@@ -147,6 +154,7 @@ void add_synth_command(CLI::App& app) {
   cmd->add_option("--cells", args->cells, "grid cells along the swatch's shorter side")->capture_default_str();
   cmd->add_option("--max-patches", args->max_patches, "stop after this many patches (0: fill the plane)");
   cmd->add_flag("!--no-cleanup", args->cleanup, "keep elements that could not be made whole");
+  add_max_memory_option(cmd);
   cmd->add_option("-o,--output", args->output, "output mesh (.ply with element ids, .obj with groups, .off, .stl)")
       ->capture_default_str();
   cmd->callback([args] { run_synth(*args); });

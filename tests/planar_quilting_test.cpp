@@ -103,7 +103,7 @@ TEST(PlanarQuilting, WeaveYarnsContinueAcrossSeams) {
   EXPECT_GE(q.longest, 2.5);
   EXPECT_GE(q.closed, 0.98 * q.elements);
   EXPECT_LE(q.intersecting_share, 0.001);
-  EXPECT_GT(stats.stitched, 0);
+  EXPECT_GT(stats.merges.stitched, 0);
   EXPECT_LE(stats.dropped_elements, 0.01 * q.elements);
 }
 

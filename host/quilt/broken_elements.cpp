@@ -1,0 +1,44 @@
+#include "quilt/broken_elements.h"
+
+#include <algorithm>
+#include <map>
+
+#include "mesh/topology.h"
+#include "quilt/stitching.h"
+#include "spatial/intersecting_pairs.h"
+
+namespace meshquilt {
+
+BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
+                                      std::vector<uint8_t>& alive) {
+  BrokenElements removed;
+  std::vector<size_t> candidates;
+  for (size_t i = 0; i < elements.size(); ++i)
+    if (alive[i]) candidates.push_back(i);
+  for (size_t i : candidates) {
+    if (swatch_closed && !inspect_surface(*elements[i]).closed_manifold()) {
+      alive[i] = 0;
+      ++removed.open;
+    }
+  }
+  std::vector<TriMesh> parts;
+  std::vector<size_t> part_of;
+  for (size_t i : candidates)
+    if (alive[i]) {
+      parts.push_back(*elements[i]);
+      part_of.push_back(i);
+    }
+  const TriMesh joined = join_elements(parts);
+  const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
+  std::map<std::pair<int32_t, int32_t>, int> element_pairs;
+  for (const auto& [a, b] : pairs) ++element_pairs[std::minmax(joined.elements[a], joined.elements[b])];
+  for (const auto& [pair, count] : element_pairs) {
+    const size_t a = part_of[pair.first], b = part_of[pair.second];
+    if (!alive[a] || !alive[b]) continue;
+    alive[elements[a]->num_faces() < elements[b]->num_faces() ? a : b] = 0;
+    ++removed.intersecting;
+  }
+  return removed;
+}
+
+}  // namespace meshquilt

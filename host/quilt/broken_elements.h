@@ -1,0 +1,22 @@
+#pragma once
+//! The clean-up pass (Section 4 of the mesh quilting paper): elements that could not be made
+//! whole are removed, and counted.
+
+#include <vector>
+
+#include "mesh/tri_mesh.h"
+
+namespace meshquilt {
+
+struct BrokenElements {
+  int open = 0;          //!< not closed 2-manifolds although the swatch's elements are
+  int intersecting = 0;  //!< the smaller of two elements that pass through each other
+};
+
+//! Marks broken elements dead in `alive` (#elements): when `swatch_closed`, every element that
+//! is not a closed 2-manifold; then, of two alive elements whose faces intersect (exact tests),
+//! the one with fewer faces (the second on a tie), pairs taken in ascending order.
+BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
+                                      std::vector<uint8_t>& alive);
+
+}  // namespace meshquilt

@@ -1,0 +1,287 @@
+#include "quilt/patch_step.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_set>
+
+#include <glm/geometric.hpp>
+
+#include "mesh/swatch_frame.h"
+#include "mesh/topology.h"
+#include "quilt/quilt_policies.h"
+#include "quilt/stitching.h"
+#include "quilt/stage_timer.h"
+
+namespace meshquilt {
+namespace {
+
+// Area-weighted vertex normals: Eq. 1 compares them with the swatch's face normals.
+std::vector<Vec3> area_weighted_normals(const TriMesh& mesh) {
+  std::vector<Vec3> normals(mesh.num_vertices(), Vec3(0.0));
+  for (const Tri& t : mesh.triangles) {
+    const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                              mesh.positions[t[2]] - mesh.positions[t[0]]);
+    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
+  }
+  for (Vec3& n : normals) {
+    const double len = glm::length(n);
+    n = len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0);
+  }
+  return normals;
+}
+
+TriMesh translated(const TriMesh& mesh, const glm::dvec2& t) {
+  TriMesh out = mesh;
+  for (Vec3& p : out.positions) p += Vec3(t, 0.0);
+  return out;
+}
+
+struct Vec3Hash {
+  size_t operator()(const Vec3& p) const {
+    const std::hash<double> h;
+    return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ull) ^ (h(p.z) * 0xc2b2ae3d27d4eb4full);
+  }
+};
+
+// True when every pinned vertex of `before` is still a vertex of `after`, at its exact position.
+bool keeps_pinned(const PlaneElement& before, const TriMesh& after) {
+  if (before.pinned.empty()) return true;
+  std::unordered_set<Vec3, Vec3Hash> positions(after.positions.begin(), after.positions.end());
+  for (size_t v = 0; v < before.pinned.size(); ++v)
+    if (before.pinned[v] && !positions.count(before.mesh.positions[v])) return false;
+  return true;
+}
+
+// Points and normals of the output vertices inside the sub-patch: what the swatch must match.
+void sub_patch_samples(const std::vector<PlaneElement>& layer, const Rect2& sub_patch, std::vector<Vec3>& points,
+                       std::vector<Vec3>& normals) {
+  for (const PlaneElement& e : layer) {
+    if (!e.alive || !e.bounds.overlaps(sub_patch)) continue;
+    const std::vector<Vec3> n = area_weighted_normals(e.mesh);
+    for (size_t v = 0; v < e.mesh.num_vertices(); ++v) {
+      if (!sub_patch.contains(e.mesh.positions[v])) continue;
+      points.push_back(e.mesh.positions[v]);
+      normals.push_back(n[v]);
+    }
+  }
+}
+
+// The overlap: under the footprint, inside the domain, where output geometry already exists
+// (cells touched by an output face's bounding box). Returns the elements under the footprint.
+std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const Rect2& footprint,
+                                  const PlaneGrid& grid, std::vector<uint8_t>& occupied) {
+  std::vector<int32_t> affected;
+  occupied.assign(static_cast<size_t>(grid.nx) * grid.ny, 0);
+  for (size_t i = 0; i < layer.size(); ++i) {
+    if (!layer[i].alive || !layer[i].bounds.overlaps(footprint)) continue;
+    affected.push_back(static_cast<int32_t>(i));
+    const TriMesh& m = layer[i].mesh;
+    for (const Tri& f : m.triangles) {
+      const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &c = m.positions[f[2]];
+      for (int y = grid.row(std::min({a.y, b.y, c.y})); y <= grid.row(std::max({a.y, b.y, c.y})); ++y)
+        for (int x = grid.column(std::min({a.x, b.x, c.x})); x <= grid.column(std::max({a.x, b.x, c.x})); ++x)
+          occupied[grid.index(x, y)] = 1;
+    }
+  }
+  return affected;
+}
+
+// Eq. 5 and 6: both sides of each partner pair move toward c = (v_out + h_in) / 2. Pinned output
+// vertices are held where they are.
+void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneElement*>& out_sources,
+                     std::vector<TriMesh>& inputs, const Correspondences& corr,
+                     const std::vector<const ElementRelation*>& partners, double max_pair_distance,
+                     const DeformationOptions& options) {
+  std::vector<std::vector<VertexConstraint>> out_constraints(outs.size());
+  std::vector<std::vector<FaceConstraint>> in_constraints(inputs.size());
+  for (const ElementRelation* r : partners) {
+    for (int32_t k : r->pairs) {
+      const VertexFacePair& p = corr.pairs[k];
+      // Where one element ends inside the overlap (a yarn's cap), the other's vertices past
+      // that end pair with the cap; pulling them toward it would bend the yarn.
+      if (p.distance > max_pair_distance) continue;
+      const Vec3 target = 0.5 * (outs[p.out_element].positions[p.out_vertex] + p.closest);
+      out_constraints[p.out_element].push_back({p.out_vertex, target});
+      in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
+    }
+  }
+  for (size_t o = 0; o < outs.size(); ++o) {
+    if (out_constraints[o].empty()) continue;
+    const std::vector<uint8_t>& pinned = out_sources[o]->pinned;
+    for (size_t v = 0; v < pinned.size(); ++v)
+      if (pinned[v]) out_constraints[o].push_back({static_cast<int32_t>(v), outs[o].positions[v]});
+    std::vector<Vec3> moved = deform_with_vertex_constraints(outs[o], out_constraints[o], options);
+    for (size_t v = 0; v < pinned.size(); ++v)
+      if (pinned[v]) moved[v] = outs[o].positions[v];
+    outs[o].positions = std::move(moved);
+  }
+  for (size_t i = 0; i < inputs.size(); ++i)
+    if (!in_constraints[i].empty())
+      inputs[i].positions = deform_with_face_constraints(inputs[i], in_constraints[i], options);
+}
+
+}  // namespace
+
+QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
+  QuiltSwatch swatch;
+  swatch.mesh = orient_swatch(input, name);
+  const Rect2 bounds = xy_bounds(swatch.mesh);
+  swatch.extent = bounds.hi - bounds.lo;
+  swatch.elements = split_elements(swatch.mesh);
+  for (const TriMesh& e : swatch.elements) {
+    swatch.element_bounds.push_back(xy_bounds(e));
+    swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();
+  }
+  double edge_sum = 0.0;
+  for (const Tri& t : swatch.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      edge_sum += glm::distance(swatch.mesh.positions[t[k]], swatch.mesh.positions[t[(k + 1) % 3]]);
+  swatch.mean_edge = edge_sum / (3.0 * static_cast<double>(swatch.mesh.num_faces()));
+  return swatch;
+}
+
+int PlaneGrid::column(double x) const {
+  return std::clamp(static_cast<int>(std::floor((x - origin.x) / cell)), 0, nx - 1);
+}
+
+int PlaneGrid::row(double y) const {
+  return std::clamp(static_cast<int>(std::floor((y - origin.y) / cell)), 0, ny - 1);
+}
+
+PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& request,
+                         const QuiltSwatch& swatch, const GeometryMatcher& matcher,
+                         const PatchStepOptions& options, std::mt19937_64& rng, MergeCounts& counts, std::map<std::string, double>& seconds, const CancelToken* cancel) {
+  const auto check_cancel = [cancel] {
+    if (cancel) cancel->check();
+  };
+  PatchOutcome outcome;
+  {
+    StageTimer timer(seconds, "match");
+    std::vector<Vec3> points, normals;
+    sub_patch_samples(layer, request.sub_patch, points, normals);
+    outcome.placement = matcher.match(points, normals, request.candidates, rng);
+  }
+  check_cancel();
+  const glm::dvec2 t = outcome.placement.translation;
+  const Rect2 footprint{t, t + swatch.extent};
+  outcome.footprint = footprint;
+
+  // The new patch: swatch elements at t whose centre lies in the domain.
+  std::vector<TriMesh> inputs;
+  std::vector<int32_t> input_source;
+  for (size_t k = 0; k < swatch.elements.size(); ++k) {
+    const Rect2& b = swatch.element_bounds[k];
+    if (!request.inside_domain(0.5 * (b.lo + b.hi) + t)) continue;
+    inputs.push_back(translated(swatch.elements[k], t));
+    input_source.push_back(static_cast<int32_t>(k));
+  }
+  outcome.inputs = static_cast<int>(inputs.size());
+
+  std::vector<uint8_t> occupied;
+  const std::vector<int32_t> affected = occupy_cells(layer, footprint, request.grid, occupied);
+  const PlaneGrid& grid = request.grid;
+  const auto in_overlap = [&](const Vec3& p) {
+    return footprint.contains(p) && request.inside_domain(glm::dvec2(p)) &&
+           occupied[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
+  };
+
+  std::vector<TriMesh> outs;
+  std::vector<const PlaneElement*> out_sources;
+  for (int32_t i : affected) {
+    outs.push_back(layer[i].mesh);
+    out_sources.push_back(&layer[i]);
+  }
+
+  Correspondences corr;
+  {
+    StageTimer timer(seconds, "correspondence");
+    corr = find_correspondences(outs, inputs, in_overlap, options.correspondence);
+  }
+  check_cancel();
+
+  const double max_pair_distance = options.partner_distance * swatch.mean_edge;
+  std::vector<uint8_t> in_partnered;
+  const std::vector<const ElementRelation*> partners =
+      choose_partners(corr, outs.size(), inputs.size(), max_pair_distance, in_partnered);
+  {
+    StageTimer timer(seconds, "deform");
+    deform_partners(outs, out_sources, inputs, corr, partners, max_pair_distance, options.deformation);
+  }
+  check_cancel();
+
+  StageTimer timer(seconds, "merge");
+  // Elements near `mesh` in the layer, but for element `self`.
+  const auto neighbours = [&](const TriMesh& mesh, int32_t self) {
+    const Rect2 b = xy_bounds(mesh);
+    std::vector<const TriMesh*> near;
+    for (size_t k = 0; k < layer.size(); ++k)
+      if (layer[k].alive && static_cast<int32_t>(k) != self && layer[k].bounds.overlaps(b))
+        near.push_back(&layer[k].mesh);
+    return near;
+  };
+  // A deformation that pushes an output element into a neighbour is undone: the element keeps
+  // its shape and the merge works from there.
+  for (size_t o = 0; o < outs.size(); ++o) {
+    PlaneElement& e = layer[affected[o]];
+    if (outs[o].positions == e.mesh.positions) continue;
+    if (passes_through(outs[o], neighbours(outs[o], affected[o]))) {
+      ++counts.undone_deformations;
+      continue;
+    }
+    e.mesh = std::move(outs[o]);
+    e.bounds = xy_bounds(e.mesh);
+    e.changed = true;
+  }
+  for (const ElementRelation* partner : partners) {
+    check_cancel();
+    PlaneElement& target = layer[affected[partner->out_element]];
+    MergeResult merged = merge_elements(target.mesh, inputs[partner->in_element], in_overlap, options.merging);
+    if (merged.outcome == MergeOutcome::kept_out) {
+      ++counts.kept;
+      continue;
+    }
+    TriMesh& replacement = merged.outcome == MergeOutcome::stitched ? merged.element : inputs[partner->in_element];
+    if (!keeps_pinned(target, replacement)) {
+      ++counts.refused_pinned;
+      continue;
+    }
+    // A merged element that would pass through a neighbour (a seam where two patches'
+    // registrations disagree) is refused: the output element stays as it was.
+    if (passes_through(replacement, neighbours(replacement, affected[partner->out_element]))) {
+      ++counts.refused_merges;
+      continue;
+    }
+    if (merged.outcome == MergeOutcome::stitched) {
+      ++counts.stitched;
+    } else {
+      ++counts.replaced;
+      target.source = input_source[partner->in_element];
+    }
+    target.mesh = std::move(replacement);
+    target.bounds = xy_bounds(target.mesh);
+    target.changed = true;
+  }
+  // Input elements not merged: added as they are, unless they lie wholly over existing output or
+  // would pass through it (an input that related to an element merged with another one).
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    if (in_partnered[i]) continue;
+    bool all_overlap = true;
+    for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && in_overlap(p);
+    const Rect2 b = xy_bounds(inputs[i]);
+    if (all_overlap || passes_through(inputs[i], neighbours(inputs[i], -1))) {
+      ++counts.rejected_inputs;
+      continue;
+    }
+    outcome.added.push_back(static_cast<int32_t>(layer.size()));
+    PlaneElement added;
+    added.mesh = std::move(inputs[i]);
+    added.bounds = b;
+    added.source = input_source[i];
+    added.changed = true;
+    layer.push_back(std::move(added));
+  }
+  return outcome;
+}
+
+}  // namespace meshquilt

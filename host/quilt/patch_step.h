@@ -1,0 +1,115 @@
+#pragma once
+//! One patch of mesh quilting in a 2D parameter plane (Sections 2.4-2.7 of the mesh quilting
+//! paper): geometry matching over the output sub-patch, element correspondences, Laplacian
+//! deformation and graph-cut merging, applied to the output elements as seen in that plane.
+//!
+//! The plane is whatever the driver makes of it: the output plane itself (planar_quilting) or a
+//! surface patch's conformal parameter plane (surface_quilting). Positions are (x, y) in the plane
+//! and z the height above it, in the swatch frame's units.
+//!
+//! Elements larger than a patch take part through their part inside the plane: the driver passes
+//! the faces that lie in the plane and marks as `pinned` the vertices those faces share with the
+//! rest of the element. Pinned vertices never move and are never cut away: a deformation restores
+//! them exactly, and a merge or replacement whose result no longer holds every pinned vertex at
+//! its exact position is refused. The driver then puts the part back by those vertices.
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "error.h"
+#include "mesh/tri_mesh.h"
+#include "quilt/correspondence.h"
+#include "quilt/element_deformation.h"
+#include "quilt/element_merging.h"
+#include "quilt/geometry_matching.h"
+#include "quilt/plane_rect.h"
+
+namespace meshquilt {
+
+//! An output element (or its part inside the plane), in plane coordinates.
+struct PlaneElement {
+  TriMesh mesh;                  //!< no `elements` ids
+  Rect2 bounds;                  //!< x-y bounds of mesh
+  std::vector<uint8_t> pinned;   //!< #V, 1 where the part joins the rest of its element; empty: none
+  int32_t source = -1;           //!< index of the swatch element it was copied from (first copy)
+  bool alive = true;             //!< false once removed
+  bool changed = false;          //!< set by the step when its mesh changed
+};
+
+//! A regular grid over the plane: cells of `cell` size from `origin`, nx x ny of them.
+struct PlaneGrid {
+  glm::dvec2 origin{0.0};
+  double cell = 1.0;
+  int nx = 1, ny = 1;
+  int column(double x) const;
+  int row(double y) const;
+  size_t index(int x, int y) const { return static_cast<size_t>(y) * nx + x; }
+};
+
+//! Options of the step (shared by every driver).
+struct PatchStepOptions {
+  double partner_distance = 0.5;  //!< merge partners' mean pair distance, in mean edge lengths, at most
+  CorrespondenceOptions correspondence;
+  DeformationOptions deformation;
+  MergeOptions merging;
+};
+
+//! The swatch as the step uses it; prepared once per run by prepare_swatch.
+struct QuiltSwatch {
+  TriMesh mesh;                       //!< in its swatch frame (thin along z)
+  std::vector<TriMesh> elements;      //!< its elements, in element order
+  std::vector<Rect2> element_bounds;  //!< x-y bounds of each element
+  glm::dvec2 extent{0.0};             //!< x-y size of the swatch
+  double mean_edge = 1.0;             //!< mean edge length: the unit of Eq. 1 distances
+  bool closed_elements = true;        //!< every element a closed 2-manifold
+};
+
+//! Puts `input` in its swatch frame and splits it into elements.
+//! \throw InputError naming `name` for a degenerate swatch.
+QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name = "swatch");
+
+//! One patch: where it may go and where it must agree with the output.
+struct PatchRequest {
+  Rect2 sub_patch;                           //!< the output sub-patch around the seed
+  std::vector<glm::dvec2> candidates;        //!< translations of the swatch to choose among
+  PlaneGrid grid;                            //!< cells for the overlap's occupancy
+  //! Whether a point of the plane lies in the output domain: inputs whose centre lies outside
+  //! are not placed, and the overlap ends there.
+  std::function<bool(const glm::dvec2&)> inside_domain;
+};
+
+//! Counters of what the merging did, summed over patches.
+struct MergeCounts {
+  int stitched = 0;              //!< related pairs cut and stitched into one element
+  int replaced = 0;              //!< output elements replaced by an input element (kept_in)
+  int kept = 0;                  //!< input elements that yielded to an output element (kept_out)
+  int rejected_inputs = 0;       //!< unrelated input elements that would have collided
+  int refused_merges = 0;        //!< merges whose result would have passed through a neighbour
+  int undone_deformations = 0;   //!< output deformations undone because they hit a neighbour
+  int refused_pinned = 0;        //!< changes refused because they would move a pinned vertex
+};
+
+//! What one step did.
+struct PatchOutcome {
+  MatchResult placement;                  //!< where the swatch went
+  Rect2 footprint;                        //!< the placed swatch's x-y bounds
+  std::vector<int32_t> added;             //!< indices of elements appended to the layer
+  int inputs = 0;                         //!< swatch elements placed inside the domain
+};
+
+//! Runs one patch on `layer` (modified in place: elements deformed, merged, replaced; inputs
+//! appended). Stage seconds accumulate in `seconds` under match, correspondence, deform, merge.
+//! \throw SolverError, DeviceError from the stages; Cancelled when `cancel` is set.
+PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& request,
+                         const QuiltSwatch& swatch, const GeometryMatcher& matcher,
+                         const PatchStepOptions& options, std::mt19937_64& rng,
+                         MergeCounts& counts, std::map<std::string, double>& seconds,
+                         const CancelToken* cancel = nullptr);
+
+}  // namespace meshquilt

@@ -1,0 +1,54 @@
+#pragma once
+//! Options, progress and statistics shared by the quilting drivers (planar and surface).
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "error.h"
+#include "quilt/geometry_matching.h"
+#include "quilt/patch_step.h"
+
+namespace meshquilt {
+
+//! How far a synthesis has come, reported after every patch.
+struct QuiltProgress {
+  double covered_area = 0.0;  //!< area of processed cells (plane units, or base units for surfaces)
+  double total_area = 0.0;    //!< area of all cells
+  int processed_cells = 0;
+  int total_cells = 0;
+  int patches = 0;
+};
+
+struct QuiltOptions {
+  int cells_across_swatch = 16;     //!< grid cells along the swatch's shorter x-y side
+  double sub_patch_fraction = 0.5;  //!< output-sub-patch side / swatch side
+  uint64_t seed = 1;                //!< seeds every random choice
+  //! Eq. 1 weight of distance against normal difference, the one home of the paper's lambda.
+  //! Eq. 1 is not scale invariant, so distances are measured in units of the swatch's mean edge
+  //! length: lambda = 1 means "one edge length off costs as much as a unit normal difference" at
+  //! every swatch scale. The drivers derive the stages' per-length weight from it (the `lambda`
+  //! fields of `matching` and `step.correspondence` are not read).
+  double lambda = 1.0;
+  bool cleanup = true;              //!< drop elements that could not be made whole
+  int max_patches = 0;              //!< stop after this many patches (0: until done); for inspection
+  MatchingOptions matching;
+  PatchStepOptions step;
+  std::function<void(const QuiltProgress&)> progress;  //!< optional, called after every patch
+  const CancelToken* cancel = nullptr;                 //!< optional: polled between and inside stages
+};
+
+//! What happened, for the stats JSON.
+struct QuiltStats {
+  int patches = 0;
+  MergeCounts merges;
+  int dropped_elements = 0;      //!< removed by the clean-up pass: dropped_open + dropped_intersecting
+  int dropped_open = 0;          //!< not closed 2-manifolds although the swatch's elements are
+  int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
+  int cells = 0;
+  double cell_size = 0.0;
+  std::map<std::string, double> stage_seconds;  //!< seed, match, correspondence, deform, merge, cleanup
+};
+
+}  // namespace meshquilt
