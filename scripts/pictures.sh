@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Regenerates the README's pictures in docs/images/ from the built CLI: small swatches quilted
+# over a 4x4 plane, each rendered oblique with one colour per element. Run after a build;
+# MESHQUILT=path/to/meshquilt picks another executable. Takes a minute or two on two cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+meshquilt=${MESHQUILT:-build/cli/meshquilt}
+[ -x "$meshquilt" ] || { echo "pictures.sh: $meshquilt not found; run scripts/build.sh first" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p docs/images
+
+# picture NAME SWATCH-ARGS...: swatch, quilt over 4x4, render to docs/images/NAME.png.
+picture() {
+  local name=$1
+  shift
+  "$meshquilt" swatch "$@" --preset small -o "$work/$name-swatch.ply" >/dev/null
+  "$meshquilt" synth --swatch "$work/$name-swatch.ply" --plane 4x4 --backend cpu --progress none -o "$work/$name.ply" >/dev/null
+  "$meshquilt" render "$work/$name.ply" --view oblique --mode elements --size 800x600 -o "docs/images/$name.png"
+}
+
+picture chainmail chainmail
+picture twill weave --pattern twill:2/3
+picture fruit fruit --seed 7
