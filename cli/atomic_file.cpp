@@ -2,33 +2,12 @@
 
 #include <unistd.h>
 
-#include <cstdio>
-#include <fstream>
-#include <system_error>
-
 #include "error.h"
+#include "mesh/atomic_write.h"
 
 namespace meshquilt::cli {
 
-void write_text_atomic(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path temp = file.string() + ".tmp" + std::to_string(getpid());
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      throw IoError(ExitCode::write_failed, file.string() + ": cannot write");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, file, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw IoError(ExitCode::write_failed, file.string() + ": cannot write: " + ec.message());
-  }
-}
+void write_text_atomic(const std::filesystem::path& file, const std::string& text) { write_file_atomic(file, text); }
 
 void check_writable(const std::filesystem::path& file) {
   std::filesystem::path folder = file.parent_path();

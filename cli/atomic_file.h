@@ -1,5 +1,5 @@
 #pragma once
-//! Writes a small text file atomically (temporary file beside it, then rename).
+//! Writes a small text file atomically (write_file_atomic: temporary file beside it, fsync, rename).
 
 #include <filesystem>
 #include <string>

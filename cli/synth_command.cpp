@@ -93,6 +93,7 @@ void run_synth(const SynthArgs& args) {
   options.cells_across_swatch = args.cells;
   options.max_patches = args.max_patches;
   options.cleanup = args.cleanup;
+  options.cancel = &interrupt_token();
   options.progress = [&](const QuiltProgress& p) {
     check_interrupted();  // stops after the current patch until the scheduler polls options.cancel
     progress.update(p.processed_cells, p.total_cells);

@@ -21,6 +21,7 @@ enum class ExitCode : int {
   device = 8,          //!< requested compute device missing or failing
   solver = 9,          //!< a numerical solve failed
   interrupted = 10,    //!< stopped by SIGINT/SIGTERM or a time limit through a CancelToken
+  too_large = 11,      //!< input or job larger than the memory budget (--max-memory) or the format allows
 };
 
 //! Base of every meshquilt error; carries its exit code.

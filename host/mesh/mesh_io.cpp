@@ -19,6 +19,8 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "mesh/atomic_write.h"
+#include "mesh/memory_budget.h"
 #include "mesh/validation.h"
 
 namespace meshquilt {
@@ -49,6 +51,9 @@ std::string read_whole_file(const std::filesystem::path& file) {
   const std::streamoff size = in.tellg();
   if (size < 0) throw IoError(ExitCode::file_unreadable, name + ": cannot open: cannot determine its size");
   in.seekg(0, std::ios::beg);
+  // The text and the mesh parsed from it live together for a moment; a mesh takes at most about
+  // as many bytes as its binary file and far fewer than its text.
+  check_memory_budget(2.0 * static_cast<double>(size), name + ": reading this " + format_bytes(static_cast<double>(size)) + " file");
   std::string data(static_cast<size_t>(size), '\0');
   if (size > 0 && !in.read(data.data(), size)) {
     throw IoError(ExitCode::file_unreadable, name + ": cannot open: read failed: " + std::strerror(errno));
@@ -242,6 +247,14 @@ TriMesh read_off(std::string_view text, const std::string& name) {
   cursor.line_token();
   cursor.skip_line();
 
+  // Each vertex takes at least "0 0 0\n" and each face "3 0 1 2\n": counts the rest of the file
+  // cannot hold are refused before anything is allocated.
+  const auto left = static_cast<int64_t>(text.size() - static_cast<size_t>(cursor.p - text.data()));
+  if (num_vertices > left / 6 || num_faces > (left - 6 * num_vertices) / 8) {
+    parse_fail(name, "OFF header declares " + std::to_string(num_vertices) + " vertices and " +
+                         std::to_string(num_faces) + " faces, more than the " + std::to_string(left) +
+                         " bytes after it can hold");
+  }
   TriMesh mesh;
   // Reserve no more than the file can hold ("0 0 0\n", "3 0 1 2\n"): the counts may be hostile.
   const auto size = static_cast<int64_t>(text.size());
@@ -489,6 +502,33 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
   std::vector<int32_t> polygon;
   std::vector<int32_t> elements;
   bool seen_vertices = false;
+  // Honest counts: every element's items need at least min_row_bytes each, so a header that
+  // declares more than the data can hold (2^31 faces in a 1 KB file) is refused up front, and
+  // so is a mesh the memory budget cannot take, before anything is allocated.
+  {
+    size_t left = reader.remaining();
+    double mesh_bytes = 0.0;
+    for (const PlyElement& element : header.elements) {
+      const size_t row = reader.min_row_bytes(element);
+      if (static_cast<uint64_t>(element.count) > left / row) {
+        parse_fail(name, "PLY header declares " + std::to_string(element.count) + " '" + element.name +
+                             "' items of at least " + std::to_string(row) + " bytes, more than the " +
+                             std::to_string(reader.remaining()) + " bytes of data can hold");
+      }
+      left -= static_cast<size_t>(element.count) * row;
+      if (element.name == "vertex") {
+        if (element.count > std::numeric_limits<int32_t>::max()) {
+          throw InputError(name + ": PLY header declares " + std::to_string(element.count) +
+                               " vertices, more than 32-bit vertex indices can address",
+                           ExitCode::too_large);
+        }
+        mesh_bytes += 24.0 * static_cast<double>(element.count);
+      } else if (element.name == "face") {
+        mesh_bytes += 16.0 * static_cast<double>(element.count);
+      }
+    }
+    check_memory_budget(mesh_bytes, name + ": the mesh its PLY header declares");
+  }
   for (const PlyElement& element : header.elements) {
     auto truncated = [&](int64_t item) {
       parse_fail(name, "PLY data ends or is malformed in element '" + element.name + "' item " + std::to_string(item) +
@@ -864,6 +904,15 @@ TriMesh read_mesh(const std::filesystem::path& file) {
     throw IoError(ExitCode::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
   }
   const std::string data = read_whole_file(file);
+  return parse_mesh(data, ext, name);
+}
+
+TriMesh parse_mesh(std::string_view data, const std::string& extension, const std::string& name) {
+  std::string ext = extension;
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
+    throw IoError(ExitCode::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
+  }
   TriMesh mesh;
   if (ext == ".obj") {
     mesh = read_obj(data, name);
@@ -908,29 +957,7 @@ void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const Wr
     content = format_stl(mesh, options.binary);
   }
 
-  // A unique temporary name beside the target, so the final rename stays on one file system.
-  static std::atomic<uint64_t> counter{0};
-  const std::filesystem::path directory = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  const std::filesystem::path temporary =
-      directory / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." +
-                   std::to_string(counter.fetch_add(1)) + ".tmp");
-  auto fail = [&](const std::string& reason) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw IoError(ExitCode::write_failed, name + ": " + reason);
-  };
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail(std::string("cannot create temporary file: ") + std::strerror(errno));
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) fail(std::string("write failed: ") + std::strerror(errno));
-    out.close();
-    if (out.fail()) fail(std::string("close failed: ") + std::strerror(errno));
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, file, ec);
-  if (ec) fail("cannot replace file: " + ec.message());
+  write_file_atomic(file, content, options.cancel);
 }
 
 }  // namespace meshquilt

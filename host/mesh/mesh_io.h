@@ -11,6 +11,8 @@
 //! ignored; STL ASCII and binary, exact duplicate vertices shared (near ones: weld_vertices).
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "mesh/tri_mesh.h"
 
@@ -21,19 +23,30 @@ namespace meshquilt {
 //! `element`, or from OBJ groups when every face lies in a group named `element_N` (otherwise
 //! `elements` stays empty). The result has passed validate_mesh.
 //! \throw IoError(file_unreadable) missing/unreadable; IoError(unknown_format) other extension;
-//!        InputError(invalid_mesh) parse error, no faces, bad index, NaN/Inf coordinates.
+//!        InputError(invalid_mesh) parse error, no faces, bad index, NaN/Inf coordinates, a
+//!        header declaring more items than the file can hold; InputError(too_large) a file or
+//!        declared mesh beyond the memory budget (memory_budget.h) or 2^31 vertices.
 //!        Messages read "FILE: problem".
 TriMesh read_mesh(const std::filesystem::path& file);
 
+//! Parses mesh data already in memory; `extension` (".ply", ".OBJ", ...) picks the format and
+//! `name` prefixes messages. Same result and errors as read_mesh (which calls it), without the
+//! file access; the fuzz targets call it directly.
+TriMesh parse_mesh(std::string_view data, const std::string& extension, const std::string& name);
+
+class CancelToken;
+
 struct WriteOptions {
-  bool binary = true;  //!< PLY/STL: binary (default) or ASCII
+  bool binary = true;                   //!< PLY/STL: binary (default) or ASCII
+  const CancelToken* cancel = nullptr;  //!< polled while writing: Cancelled leaves `file` untouched
 };
 
 //! Writes a mesh, choosing the format by extension (.ply .obj .off .stl). Element ids, when
 //! present, go to a PLY face property `element` (int) or to OBJ groups `g element_N`.
-//! Atomic: writes a temporary file beside `file` and renames it, so a failure never leaves a
-//! truncated or overwritten output.
-//! \throw IoError(unknown_format) other extension; IoError(write_failed) on any write error.
+//! Atomic (write_file_atomic): a temporary file beside `file`, fsynced and renamed, so a failure
+//! or a kill at any moment never leaves a truncated or overwritten output.
+//! \throw IoError(unknown_format) other extension; IoError(write_failed) on any write error;
+//!        Cancelled when options.cancel fires (no file changed).
 //! Coordinates are written in shortest round-trip form (ASCII) or as doubles (PLY binary), so
 //! PLY/OBJ/OFF round trips are exact; STL stores floats.
 void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const WriteOptions& options = {});

@@ -1,11 +1,89 @@
 #include "mesh/swatch_frame.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
 #include <glm/geometric.hpp>
 
 #include "error.h"
 #include "mesh/validation.h"
 
 namespace meshquilt {
+
+void check_swatch_proportions(const TriMesh& swatch, const std::string& source) {
+  auto fail = [&](const std::string& problem) {
+    throw InputError(source + ": degenerate swatch: " + problem, ExitCode::invalid_mesh);
+  };
+  auto vertex_text = [&](size_t v) {
+    char buffer[160];
+    const Vec3& p = swatch.positions[v];
+    std::snprintf(buffer, sizeof(buffer), "vertex %zu at (%.3g, %.3g, %.3g)", v, p.x, p.y, p.z);
+    return std::string(buffer);
+  };
+  // Float kernels square coordinates measured in edge lengths; beyond this nothing is a swatch.
+  for (size_t v = 0; v < swatch.positions.size(); ++v) {
+    const Vec3& p = swatch.positions[v];
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxSwatchCoordinate) {
+      fail(vertex_text(v) + " lies beyond +-1e15");
+    }
+  }
+  Vec3 low = swatch.positions.front();
+  Vec3 high = low;
+  for (const Vec3& p : swatch.positions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  const Vec3 extent = high - low;
+  const int height = thinnest_axis(extent);
+  const double wide = std::max(extent[(height + 1) % 3], extent[(height + 2) % 3]);
+  const double narrow = std::min(extent[(height + 1) % 3], extent[(height + 2) % 3]);
+  // A stray vertex far from the rest: the bounding box is then many orders of magnitude larger
+  // than the faces. A closed layer of F faces with edges e spans about sqrt(F) e, so compare the
+  // diagonal with the median edge length, with a generous margin for uneven meshes.
+  std::vector<double> edges;
+  edges.reserve(swatch.triangles.size() * 3);
+  for (const Tri& t : swatch.triangles) {
+    for (int k = 0; k < 3; ++k) edges.push_back(glm::distance(swatch.positions[t[k]], swatch.positions[t[(k + 1) % 3]]));
+  }
+  std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
+  const double median_edge = edges[edges.size() / 2];
+  const double diagonal = glm::length(extent);
+  const double allowed = kStrayVertexFactor * std::sqrt(static_cast<double>(swatch.triangles.size()));
+  if (!(diagonal <= allowed * median_edge)) {
+    // Name the vertex farthest from the coordinate-wise median point: the likely stray one.
+    Vec3 median;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<double> values;
+      values.reserve(swatch.positions.size());
+      for (const Vec3& p : swatch.positions) values.push_back(p[axis]);
+      std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+      median[axis] = values[values.size() / 2];
+    }
+    size_t far = 0;
+    double far_distance = -1.0;
+    for (size_t v = 0; v < swatch.positions.size(); ++v) {
+      const double d = glm::distance(swatch.positions[v], median);
+      if (d > far_distance) {
+        far_distance = d;
+        far = v;
+      }
+    }
+    char buffer[200];
+    std::snprintf(buffer, sizeof(buffer), "bounding box %.3g across is %.3g median edge lengths for %zu faces (at most %.3g); ",
+                  diagonal, median_edge > 0.0 ? diagonal / median_edge : HUGE_VAL, swatch.triangles.size(), allowed);
+    fail(buffer + vertex_text(far) + " lies far from the rest");
+  }
+  // The grid has cells_across_swatch cells along the shorter side, so an aspect of A means
+  // 16 A cells along the longer one per swatch extent: a sliver would ask for billions.
+  if (narrow > 0.0 && !(wide <= kMaxSwatchAspect * narrow)) {  // zero: orient_swatch says so
+    char buffer[200];
+    std::snprintf(buffer, sizeof(buffer), "x-y extents %.3g x %.3g, an aspect of %.3g (at most %g)", wide, narrow,
+                  wide / narrow, kMaxSwatchAspect);
+    fail(buffer);
+  }
+}
 
 int thinnest_axis(const Vec3& extent) {
   if (extent.z <= extent.x && extent.z <= extent.y) return 2;
@@ -14,6 +92,8 @@ int thinnest_axis(const Vec3& extent) {
 
 TriMesh orient_swatch(const TriMesh& swatch, const std::string& source) {
   validate_mesh(swatch, source);
+  // First: a stray vertex also spoils the thickness test below, whose message would mislead.
+  check_swatch_proportions(swatch, source);
   Vec3 low = swatch.positions.front();
   Vec3 high = low;
   for (const Vec3& p : swatch.positions) {

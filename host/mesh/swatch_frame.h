@@ -15,8 +15,23 @@ namespace meshquilt {
 //! `source` names the swatch in messages.
 //! \throw InputError(invalid_mesh) "SOURCE: problem" when validate_mesh fails, and
 //!        "SOURCE: degenerate swatch: ..." when the thickness is below 1e-9 x the bounding-box
-//!        diagonal or an x-y extent is zero.
+//!        diagonal, an x-y extent is zero, or check_swatch_proportions refuses it.
 TriMesh orient_swatch(const TriMesh& swatch, const std::string& source);
+
+//! Largest coordinate magnitude a swatch may have.
+constexpr double kMaxSwatchCoordinate = 1e15;
+//! Largest ratio of the longer to the shorter x-y extent of a swatch.
+constexpr double kMaxSwatchAspect = 1000.0;
+//! A swatch's bounding-box diagonal may be at most this x sqrt(#F) median edge lengths.
+constexpr double kStrayVertexFactor = 100.0;
+
+//! Refuses a swatch whose proportions are absurd for its face count, before its extent turns
+//! into billions of grid cells or float overflow: a coordinate beyond kMaxSwatchCoordinate, an
+//! x-y aspect above kMaxSwatchAspect, or a bounding box more than kStrayVertexFactor x sqrt(#F)
+//! median edge lengths across (a stray vertex). Called by orient_swatch.
+//! \pre validate_mesh passed. \throw InputError(invalid_mesh) "SOURCE: degenerate swatch: ..."
+//!      naming the extents or the farthest vertex.
+void check_swatch_proportions(const TriMesh& swatch, const std::string& source);
 
 //! Index (0 = x, 1 = y, 2 = z) of the axis orient_swatch takes as the height, for a bounding box
 //! of extents `extent` (ties keep z, then x before y).

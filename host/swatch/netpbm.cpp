@@ -82,6 +82,10 @@ GrayImage read_netpbm(const std::filesystem::path& file) {
   if (!in) throw IoError(ExitCode::file_unreadable, name + ": cannot open image");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw IoError(ExitCode::file_unreadable, name + ": read error");
+  return parse_netpbm(std::move(bytes), name);
+}
+
+GrayImage parse_netpbm(std::string bytes, const std::string& name) {
   if (bytes.size() < 2 || bytes[0] != 'P' || bytes[1] < '1' || bytes[1] > '6') {
     throw IoError(ExitCode::unknown_format, name + ": not a PBM/PGM/PPM image (no P1..P6 magic number)");
   }
@@ -95,8 +99,21 @@ GrayImage read_netpbm(const std::filesystem::path& file) {
   const bool color = kind == 3 || kind == 6;
   const long maxval = bitmap ? 1 : reader.number("maxval", 1, 65535);
   const size_t pixels = static_cast<size_t>(image.width) * image.height;
-  image.values.resize(pixels);
   const int channels = color ? 3 : 1;
+  // Honest sizes: the header may declare 32768 x 32768 pixels in a few bytes. Each sample takes
+  // at least 1 character in plain PBM ("01"), 2 in other plain forms ("0 "), its bytes in raw
+  // forms (the last plain sample may lack its separator); refuse before allocating 8 bytes a pixel.
+  {
+    const size_t samples = pixels * channels;
+    const size_t sample_bytes = kind == 1 ? 1 : kind <= 3 ? 2 : maxval > 255 ? 2 : 1;
+    const size_t needed = kind == 4 ? (static_cast<size_t>(image.width) + 7) / 8 * image.height
+                                    : samples * sample_bytes - (kind <= 3 && kind != 1 ? 1 : 0);
+    if (reader.remaining() < needed) {
+      reader.fail("header declares " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                  " pixels, more than the " + std::to_string(reader.remaining()) + " bytes after it hold (truncated?)");
+    }
+  }
+  image.values.resize(pixels);
   auto sample = [&](bool raw) -> double {
     if (!raw) return static_cast<double>(reader.number("sample", 0, maxval));
     unsigned v = reader.byte();

@@ -3,6 +3,7 @@
 //! height fields and Jacquard weave designs need no image library.
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace meshquilt {
@@ -23,5 +24,10 @@ struct GrayImage {
 //!        IoError(unknown_format) when it does not start with a Netpbm magic number P1..P6.
 //!        Messages read "FILE: problem".
 GrayImage read_netpbm(const std::filesystem::path& file);
+
+//! Parses Netpbm bytes already in memory (`name` prefixes messages); read_netpbm calls it, and
+//! so does the fuzz target. Same errors as read_netpbm, plus IoError(file_unreadable) "header
+//! declares W x H pixels, more than the N bytes after it hold" before any pixel is allocated.
+GrayImage parse_netpbm(std::string bytes, const std::string& name);
 
 }  // namespace meshquilt
