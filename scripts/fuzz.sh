@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz/ with clang 14 into build-fuzz/ and runs each for
+# SECONDS (default 60) on a working copy of its seed corpus plus the regression files.
+#   bash scripts/fuzz.sh [SECONDS] [TARGET...]
+# A crash, a sanitizer report or a hang over 10 s stops that target; the input is saved under
+# build-fuzz/artifacts/TARGET/ and the script fails. Copy it to tests/fuzz/regressions/TARGET/
+# so the normal test suite replays it (fuzz_corpus_test). Prints executions per target.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(obj ply off stl swatch netpbm)
+jobs=${FUZZ_BUILD_JOBS:-2}
+
+command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
+CXX=clang++-14 cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build-fuzz -j"$jobs" >/dev/null
+
+status=0
+total=0
+printf '%-8s %12s %8s %s\n' target executions seconds result
+for t in "${targets[@]}"; do
+  work=build-fuzz/corpus/$t
+  artifacts=build-fuzz/artifacts/$t/
+  mkdir -p "$work" "$artifacts"
+  cp -n tests/fuzz/corpus/"$t"/* "$work"/ 2>/dev/null || true
+  [ -d tests/fuzz/regressions/"$t" ] && cp -n tests/fuzz/regressions/"$t"/* "$work"/ 2>/dev/null || true
+  log=build-fuzz/$t.log
+  result=ok
+  # UBSan reports end the run (fuzz targets are built with -fno-sanitize-recover=all).
+  if ! UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ./build-fuzz/"$t"_fuzzer "$work" \
+      -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+      -artifact_prefix="$artifacts" -print_final_stats=1 >"$log" 2>&1; then
+    result="FAILED (see $log, input in $artifacts)"
+    status=1
+  fi
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
+  total=$((total + ${runs:-0}))
+  printf '%-8s %12s %8s %s\n' "$t" "${runs:-0}" "$seconds" "$result"
+done
+printf '%-8s %12s\n' total "$total"
+exit $status

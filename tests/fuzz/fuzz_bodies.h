@@ -1,0 +1,66 @@
+#pragma once
+// One body per fuzz target, shared by the libFuzzer executables (tests/fuzz/*_fuzzer.cpp) and
+// the corpus replay test of the normal build (tests/fuzz_corpus_test.cpp). A body feeds the
+// bytes to a reader; the reader's own typed errors are expected, anything else (a crash, a
+// sanitizer report, another exception type) is a finding.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "error.h"
+#include "mesh/memory_budget.h"
+#include "mesh/mesh_io.h"
+#include "mesh/swatch_frame.h"
+#include "mesh/validation.h"
+#include "swatch/netpbm.h"
+
+namespace meshquilt::fuzz {
+
+// libFuzzer's default RSS limit is 2 GiB; a reader must refuse what would not fit in 256 MiB.
+inline void limit_memory() { set_memory_budget(uint64_t{256} << 20); }
+
+inline std::string_view as_text(const uint8_t* data, size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+inline void mesh_body(const uint8_t* data, size_t size, const char* extension) {
+  try {
+    const TriMesh mesh = parse_mesh(as_text(data, size), extension, "fuzz");
+    validate_mesh(mesh, "fuzz");  // parse_mesh promises a valid mesh: this must not throw
+  } catch (const InputError&) {
+  } catch (const IoError&) {
+  }
+}
+
+inline void obj_body(const uint8_t* data, size_t size) { mesh_body(data, size, ".obj"); }
+inline void ply_body(const uint8_t* data, size_t size) { mesh_body(data, size, ".ply"); }
+inline void off_body(const uint8_t* data, size_t size) { mesh_body(data, size, ".off"); }
+inline void stl_body(const uint8_t* data, size_t size) { mesh_body(data, size, ".stl"); }
+
+// The swatch loader: the first byte picks the format, the rest is the file; then validation
+// and the swatch frame (orientation, proportion checks) as `synth --swatch` runs them.
+inline void swatch_body(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  static const char* extensions[] = {".obj", ".ply", ".off", ".stl"};
+  try {
+    const TriMesh mesh = parse_mesh(as_text(data + 1, size - 1), extensions[data[0] % 4], "fuzz");
+    const TriMesh oriented = orient_swatch(mesh, "fuzz");
+    validate_mesh(oriented, "fuzz");
+  } catch (const InputError&) {
+  } catch (const IoError&) {
+  }
+}
+
+inline void netpbm_body(const uint8_t* data, size_t size) {
+  try {
+    const GrayImage image = parse_netpbm(std::string(as_text(data, size)), "fuzz");
+    double sum = 0.0;
+    for (double v : image.values) sum += v;  // touch every pixel: all must be initialised
+    if (!(image.values.size() == static_cast<size_t>(image.width) * image.height) || !(sum >= 0.0)) __builtin_trap();
+  } catch (const IoError&) {
+  }
+}
+
+}  // namespace meshquilt::fuzz
