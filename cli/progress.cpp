@@ -19,13 +19,13 @@ ProgressReporter::ProgressReporter(ProgressMode mode, std::string task)
     : mode_(mode), terminal_(isatty(STDERR_FILENO) != 0), task_(std::move(task)),
       start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
 
-void ProgressReporter::update(long done, long total) {
+void ProgressReporter::update(double done, double total) {
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double fraction = total > 0 ? static_cast<double>(done) / total : 1.0;
+  const double fraction = total > 0.0 ? done / total : 1.0;
   const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : -1.0;
   if (mode_ == ProgressMode::json) {
-    std::printf("{\"event\":\"progress\",\"task\":\"%s\",\"done\":%ld,\"total\":%ld,\"elapsed_s\":%.3f,\"eta_s\":%.3f}\n",
+    std::printf("{\"event\":\"progress\",\"task\":\"%s\",\"done\":%.6g,\"total\":%.6g,\"elapsed_s\":%.3f,\"eta_s\":%.3f}\n",
                 task_.c_str(), done, total, elapsed, eta);
     std::fflush(stdout);
     return;

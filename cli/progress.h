@@ -15,8 +15,8 @@ class ProgressReporter {
  public:
   //! `automatic` draws a bar on stderr only when stderr is a terminal.
   ProgressReporter(ProgressMode mode, std::string task);
-  //! Reports `done` of `total` units; the ETA extrapolates the elapsed time linearly.
-  void update(long done, long total);
+  //! Reports `done` of `total` units (cells, covered area); the ETA extrapolates linearly.
+  void update(double done, double total);
   //! Ends the bar (newline) or writes a final JSON line with `summary` (a JSON object text).
   void finish(const std::string& summary_json);
 

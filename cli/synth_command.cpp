@@ -132,6 +132,9 @@ void run_synth(const SynthArgs& args) {
       {"dropped_intersecting", stats.dropped_intersecting},
       {"cells", stats.cells},
       {"cell_size", stats.cell_size},
+      {"holes", stats.holes},
+      {"hole_cells", stats.hole_cells},
+      {"largest_hole_area", stats.largest_hole_area},
       {"stages", stats.stage_seconds},
   };
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");

@@ -67,6 +67,44 @@ void sub_patch_samples(const std::vector<PlaneElement>& layer, const Rect2& sub_
   }
 }
 
+// Marks the cells touched by each face's x-y bounding box.
+void rasterize_faces(const TriMesh& m, const PlaneGrid& grid, std::vector<uint8_t>& cells) {
+  for (const Tri& f : m.triangles) {
+    const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &c = m.positions[f[2]];
+    for (int y = grid.row(std::min({a.y, b.y, c.y})); y <= grid.row(std::max({a.y, b.y, c.y})); ++y)
+      for (int x = grid.column(std::min({a.x, b.x, c.x})); x <= grid.column(std::max({a.x, b.x, c.x})); ++x)
+        cells[grid.index(x, y)] = 1;
+  }
+}
+
+// Cells whose centre lies inside the footprint, one cell away from its edges inside the domain,
+// and over which kept geometry lies or the placed swatch has none.
+std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
+                                   const Rect2& footprint, const PlaneGrid& grid,
+                                   const std::function<bool(const glm::dvec2&)>& inside_domain) {
+  const size_t count = static_cast<size_t>(grid.nx) * grid.ny;
+  std::vector<uint8_t> kept(count, 0), swatch(count, 0), covered(count, 0);
+  for (const PlaneElement& e : layer)
+    if (e.alive && e.bounds.overlaps(footprint)) rasterize_faces(e.mesh, grid, kept);
+  for (const TriMesh& m : placed) rasterize_faces(m, grid, swatch);
+  // A cell next to the footprint's edge is where the next patch's seam goes, unless the domain
+  // ends there.
+  const auto settled = [&](const glm::dvec2& p) { return footprint.contains(p) || !inside_domain(p); };
+  const int x0 = grid.column(footprint.lo.x), x1 = grid.column(footprint.hi.x);
+  const int y0 = grid.row(footprint.lo.y), y1 = grid.row(footprint.hi.y);
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const glm::dvec2 centre = grid.origin + grid.cell * glm::dvec2(x + 0.5, y + 0.5);
+      const size_t k = grid.index(x, y);
+      if (!footprint.contains(centre) || !inside_domain(centre) || !(kept[k] || !swatch[k])) continue;
+      const double d = grid.cell;
+      if (settled(centre + glm::dvec2(d, 0.0)) && settled(centre - glm::dvec2(d, 0.0)) &&
+          settled(centre + glm::dvec2(0.0, d)) && settled(centre - glm::dvec2(0.0, d)))
+        covered[k] = 1;
+    }
+  return covered;
+}
+
 // The overlap: under the footprint, inside the domain, where output geometry already exists
 // (cells touched by an output face's bounding box). Returns the elements under the footprint.
 std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const Rect2& footprint,
@@ -76,13 +114,7 @@ std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const 
   for (size_t i = 0; i < layer.size(); ++i) {
     if (!layer[i].alive || !layer[i].bounds.overlaps(footprint)) continue;
     affected.push_back(static_cast<int32_t>(i));
-    const TriMesh& m = layer[i].mesh;
-    for (const Tri& f : m.triangles) {
-      const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &c = m.positions[f[2]];
-      for (int y = grid.row(std::min({a.y, b.y, c.y})); y <= grid.row(std::max({a.y, b.y, c.y})); ++y)
-        for (int x = grid.column(std::min({a.x, b.x, c.x})); x <= grid.column(std::max({a.x, b.x, c.x})); ++x)
-          occupied[grid.index(x, y)] = 1;
-    }
+    rasterize_faces(layer[i].mesh, grid, occupied);
   }
   return affected;
 }
@@ -141,6 +173,12 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
   return swatch;
 }
 
+bool PatchOutcome::covers(const PlaneGrid& grid, const glm::dvec2& p) const {
+  const glm::dvec2 local = (p - grid.origin) / grid.cell;
+  if (local.x < 0.0 || local.y < 0.0 || local.x >= grid.nx || local.y >= grid.ny) return false;
+  return covered[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
+}
+
 int PlaneGrid::column(double x) const {
   return std::clamp(static_cast<int>(std::floor((x - origin.x) / cell)), 0, nx - 1);
 }
@@ -177,6 +215,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     input_source.push_back(static_cast<int32_t>(k));
   }
   outcome.inputs = static_cast<int>(inputs.size());
+  const std::vector<TriMesh> placed = inputs;
 
   std::vector<uint8_t> occupied;
   const std::vector<int32_t> affected = occupy_cells(layer, footprint, request.grid, occupied);
@@ -222,9 +261,14 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   };
   // A deformation that pushes an output element into a neighbour is undone: the element keeps
   // its shape and the merge works from there.
+  // Shapes before the deformation: a partner that is not merged after all gets its shape back,
+  // since the deformation only served the seam (repeated patches would otherwise bend it again
+  // and again).
+  std::vector<std::vector<Vec3>> undeformed(outs.size());
   for (size_t o = 0; o < outs.size(); ++o) {
     PlaneElement& e = layer[affected[o]];
     if (outs[o].positions == e.mesh.positions) continue;
+    undeformed[o] = e.mesh.positions;
     if (passes_through(outs[o], neighbours(outs[o], affected[o]))) {
       ++counts.undone_deformations;
       continue;
@@ -236,20 +280,29 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   for (const ElementRelation* partner : partners) {
     check_cancel();
     PlaneElement& target = layer[affected[partner->out_element]];
+    const auto restore_shape = [&] {
+      std::vector<Vec3>& before = undeformed[partner->out_element];
+      if (before.empty()) return;
+      target.mesh.positions = std::move(before);
+      target.bounds = xy_bounds(target.mesh);
+    };
     MergeResult merged = merge_elements(target.mesh, inputs[partner->in_element], in_overlap, options.merging);
     if (merged.outcome == MergeOutcome::kept_out) {
       ++counts.kept;
+      restore_shape();
       continue;
     }
     TriMesh& replacement = merged.outcome == MergeOutcome::stitched ? merged.element : inputs[partner->in_element];
     if (!keeps_pinned(target, replacement)) {
       ++counts.refused_pinned;
+      restore_shape();
       continue;
     }
     // A merged element that would pass through a neighbour (a seam where two patches'
     // registrations disagree) is refused: the output element stays as it was.
     if (passes_through(replacement, neighbours(replacement, affected[partner->out_element]))) {
       ++counts.refused_merges;
+      restore_shape();
       continue;
     }
     if (merged.outcome == MergeOutcome::stitched) {
@@ -281,6 +334,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     added.changed = true;
     layer.push_back(std::move(added));
   }
+  outcome.covered = covered_cells(layer, placed, footprint, grid, request.inside_domain);
   return outcome;
 }
 

@@ -101,6 +101,13 @@ struct PatchOutcome {
   Rect2 footprint;                        //!< the placed swatch's x-y bounds
   std::vector<int32_t> added;             //!< indices of elements appended to the layer
   int inputs = 0;                         //!< swatch elements placed inside the domain
+  //! #grid cells: 1 where the patch covered the cell, that is, the cell lies inside the footprint
+  //! shrunk by one cell and kept geometry now lies over it, or the placed swatch itself has no
+  //! geometry there (a sparse swatch is mostly empty by design). A refused merge or a rejected
+  //! input leaves its cells uncovered, so the driver seeds there again.
+  std::vector<uint8_t> covered;
+  //! Whether the point lies in a covered cell.
+  bool covers(const PlaneGrid& grid, const glm::dvec2& p) const;
 };
 
 //! Runs one patch on `layer` (modified in place: elements deformed, merged, replaced; inputs

@@ -7,6 +7,7 @@
 #include "error.h"
 #include "mesh/topology.h"
 #include "quilt/broken_elements.h"
+#include "quilt/hole_tracker.h"
 #include "quilt/seed_finding.h"
 #include "quilt/stage_timer.h"
 
@@ -26,18 +27,6 @@ std::vector<glm::dvec2> covering_translations(int px, int py, int sub_nx, int su
   for (int ty = py + sub_ny - swatch_ny; ty <= py; ++ty)
     for (int tx = px + sub_nx - swatch_nx; tx <= px; ++tx) candidates.emplace_back(tx * cell, ty * cell);
   return candidates;
-}
-
-// Cells wholly inside the footprint shrunk by one cell are done; the seed always is.
-void mark_footprint_processed(SeedFinder& seeds, const PlaneGrid& grid, const Rect2& footprint, int seed_cell) {
-  const double cell = grid.cell;
-  const int x0 = std::max(0, static_cast<int>(std::ceil(footprint.lo.x / cell - 1e-9)) + 1);
-  const int x1 = std::min(grid.nx, static_cast<int>(std::floor(footprint.hi.x / cell + 1e-9)) - 1);
-  const int y0 = std::max(0, static_cast<int>(std::ceil(footprint.lo.y / cell - 1e-9)) + 1);
-  const int y1 = std::min(grid.ny, static_cast<int>(std::floor(footprint.hi.y / cell + 1e-9)) - 1);
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) seeds.mark_processed(static_cast<int>(grid.index(x, y)));
-  seeds.mark_processed(seed_cell);
 }
 
 }  // namespace
@@ -72,6 +61,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   const GeometryMatcher matcher(device, swatch.mesh, cell, matching);
 
   SeedFinder seeds(grid.nx, grid.ny);
+  HoleTracker holes(seeds, options.seed_attempts);
   std::mt19937_64 rng(options.seed);
   std::vector<PlaneElement> layer;
   PatchRequest request;
@@ -98,7 +88,9 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
         quilt_patch(layer, request, swatch, matcher, step, rng, stats.merges, seconds, options.cancel);
     {
       StageTimer timer(seconds, "seed");
-      mark_footprint_processed(seeds, grid, outcome.footprint, *seed_cell);
+      for (int c = 0; c < total_cells; ++c)
+        if (outcome.covered[c]) seeds.mark_processed(c);
+      holes.attempted(*seed_cell);
     }
     ++stats.patches;
     if (options.progress) {
@@ -120,6 +112,10 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
     stats.dropped_intersecting = removed.intersecting;
   }
   stats.dropped_elements = stats.dropped_open + stats.dropped_intersecting;
+  const HoleSummary hole_summary = holes.summary(grid_neighbours(grid.nx, grid.ny));
+  stats.holes = hole_summary.holes;
+  stats.hole_cells = hole_summary.cells;
+  stats.largest_hole_area = hole_summary.largest_cells * cell * cell;
   std::vector<TriMesh> kept;
   for (size_t i = 0; i < layer.size(); ++i)
     if (alive[i]) kept.push_back(std::move(layer[i].mesh));

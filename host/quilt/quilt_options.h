@@ -33,6 +33,7 @@ struct QuiltOptions {
   double lambda = 1.0;
   bool cleanup = true;              //!< drop elements that could not be made whole
   int max_patches = 0;              //!< stop after this many patches (0: until done); for inspection
+  int seed_attempts = 3;            //!< a cell still uncovered after this many patches seeded on it is a hole
   MatchingOptions matching;
   PatchStepOptions step;
   std::function<void(const QuiltProgress&)> progress;  //!< optional, called after every patch
@@ -48,6 +49,9 @@ struct QuiltStats {
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
   int cells = 0;
   double cell_size = 0.0;
+  int holes = 0;                  //!< connected groups of cells left uncovered after seed_attempts patches
+  int hole_cells = 0;             //!< cells in holes
+  double largest_hole_area = 0.0; //!< area of the largest hole (plane units, or base units for surfaces)
   std::map<std::string, double> stage_seconds;  //!< seed, match, correspondence, deform, merge, cleanup
 };
 
