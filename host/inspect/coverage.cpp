@@ -14,6 +14,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "error.h"
+#include "spatial/box_grid.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {
@@ -279,10 +280,7 @@ BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radi
   Vec3 origin(std::numeric_limits<double>::infinity());
   for (const Vec3& p : base.positions) origin = glm::min(origin, p);
   auto cell_of = [&](const Vec3& p) { return glm::i64vec3(glm::floor((p - origin) / radius)); };
-  auto key_of = [](const glm::i64vec3& c) {
-    return (static_cast<uint64_t>(c.x + 2) * 73856093u) ^ (static_cast<uint64_t>(c.y + 2) * 19349663u) ^
-           (static_cast<uint64_t>(c.z + 2) * 83492791u);
-  };
+  auto key_of = [](const glm::i64vec3& c) { return grid_cell_hash(c.x, c.y, c.z); };
   std::unordered_multimap<uint64_t, int32_t> grid;
   grid.reserve(feet.size());
   for (size_t i = 0; i < feet.size(); ++i) grid.emplace(key_of(cell_of(feet[i])), static_cast<int32_t>(i));

@@ -217,4 +217,99 @@ TriMesh join_elements(const std::vector<TriMesh>& parts) {
   return out;
 }
 
+std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh) {
+  // Sorting (edge, face-slot) records groups each edge's faces without a hash map.
+  struct Use {
+    uint64_t key;
+    int32_t face, slot;
+  };
+  std::vector<Use> uses;
+  uses.reserve(mesh.num_faces() * 3);
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      uses.push_back({undirected_edge_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]), static_cast<int32_t>(f), k});
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) { return x.key < y.key; });
+  std::vector<std::array<int32_t, 3>> nb(mesh.num_faces(), {-1, -1, -1});
+  for (size_t i = 0; i < uses.size();) {
+    size_t j = i;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    if (j - i == 2) {
+      nb[uses[i].face][uses[i].slot] = uses[i + 1].face;
+      nb[uses[i + 1].face][uses[i + 1].slot] = uses[i].face;
+    } else if (j - i > 2) {
+      for (size_t k = i; k < j; ++k) nb[uses[k].face][uses[k].slot] = -2;
+    }
+    i = j;
+  }
+  return nb;
+}
+
+SurfaceReport inspect_surface(const TriMesh& mesh) {
+  SurfaceReport r;
+  std::vector<uint64_t> directed;
+  directed.reserve(mesh.num_faces() * 3);
+  for (const Tri& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ++r.degenerate_faces;
+    for (int k = 0; k < 3; ++k) directed.push_back(directed_edge_key(t[k], t[(k + 1) % 3]));
+  }
+  std::sort(directed.begin(), directed.end());
+  auto count_directed = [&](uint64_t key) {
+    const auto range = std::equal_range(directed.begin(), directed.end(), key);
+    return static_cast<int64_t>(range.second - range.first);
+  };
+  int64_t edges = 0;
+  for (size_t i = 0; i < directed.size();) {
+    size_t j = i;
+    while (j < directed.size() && directed[j] == directed[i]) ++j;
+    const auto a = static_cast<int32_t>(directed[i] >> 32), b = static_cast<int32_t>(directed[i] & 0xffffffffu);
+    const int64_t forward = static_cast<int64_t>(j - i), backward = a == b ? 0 : count_directed(directed_edge_key(b, a));
+    // Each undirected edge is counted once, from its smaller-first direction or, when only the
+    // larger-first direction exists, from that one.
+    if (a < b || backward == 0) {
+      ++edges;
+      const int64_t uses = forward + backward;
+      if (uses == 1) ++r.boundary_edges;
+      else if (uses > 2) ++r.nonmanifold_edges;
+      else if (forward != 1 || backward != 1) ++r.misoriented_edges;
+    }
+    i = j;
+  }
+  // Fans: faces around a vertex joined when they share an edge at that vertex.
+  const size_t V = mesh.num_vertices();
+  std::vector<int32_t> first(V + 1, 0), around(mesh.num_faces() * 3);
+  for (const Tri& t : mesh.triangles)
+    for (int32_t v : t) ++first[v + 1];
+  for (size_t v = 0; v < V; ++v) first[v + 1] += first[v];
+  std::vector<int32_t> fill(first.begin(), first.end() - 1);
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int32_t v : mesh.triangles[f]) around[fill[v]++] = static_cast<int32_t>(f);
+  int64_t used = 0;
+  for (size_t v = 0; v < V; ++v) {
+    const int32_t n = first[v + 1] - first[v];
+    if (n == 0) continue;
+    ++used;
+    const int32_t* fs = &around[first[v]];
+    DisjointSets fan(static_cast<size_t>(n));
+    for (int32_t i = 0; i < n; ++i)
+      for (int32_t j = i + 1; j < n; ++j) {
+        int shared = 0;
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) shared += mesh.triangles[fs[i]][a] == mesh.triangles[fs[j]][b];
+        if (shared >= 2) fan.unite(i, j);
+      }
+    int fans = 0;
+    for (int32_t i = 0; i < n; ++i) fans += fan.find(i) == i;
+    if (fans > 1) ++r.pinched_vertices;
+  }
+  DisjointSets vertex_sets(V);
+  for (const Tri& t : mesh.triangles) {
+    vertex_sets.unite(t[0], t[1]);
+    vertex_sets.unite(t[1], t[2]);
+  }
+  for (size_t v = 0; v < V; ++v)
+    if (first[v + 1] > first[v] && vertex_sets.find(static_cast<int32_t>(v)) == static_cast<int32_t>(v)) ++r.components;
+  r.euler = used - edges + static_cast<int64_t>(mesh.num_faces());
+  return r;
+}
+
 }  // namespace meshquilt

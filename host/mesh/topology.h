@@ -1,6 +1,8 @@
 #pragma once
-//! Welding and connected components (geometry elements) of a triangle mesh.
+//! Connectivity of a triangle mesh: welding, connected components (geometry elements), face
+//! adjacency and topological defects (closedness).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -33,5 +35,41 @@ std::vector<TriMesh> split_elements(const TriMesh& mesh);
 //! Concatenates meshes, setting `elements` to the index of the part each face came from (so
 //! split_elements(join_elements(parts)) gives back the non-empty parts).
 TriMesh join_elements(const std::vector<TriMesh>& parts);
+
+//! Key of the directed edge a -> b: a in the high 32 bits, b in the low ones.
+inline uint64_t directed_edge_key(int32_t a, int32_t b) {
+  return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
+}
+
+//! Key of the undirected edge {a, b}: directed_edge_key(min, max).
+inline uint64_t undirected_edge_key(int32_t a, int32_t b) {
+  return a < b ? directed_edge_key(a, b) : directed_edge_key(b, a);
+}
+
+//! Face adjacency across edges: #F x 3, entry k is the face across edge (v[k], v[k+1]); -1 for a
+//! boundary edge, -2 for an edge shared by more than two faces (non-manifold).
+std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh);
+
+//! Topological defects of a triangle mesh; closed_manifold() is the closedness test of every
+//! stage (stitched results, clean-up, swatch elements).
+struct SurfaceReport {
+  int64_t boundary_edges = 0;        //!< undirected edges used by one face
+  int64_t nonmanifold_edges = 0;     //!< undirected edges used by three or more faces
+  int64_t misoriented_edges = 0;     //!< two-face edges traversed in the same direction by both
+  int64_t pinched_vertices = 0;      //!< vertices whose faces form more than one fan
+  int64_t degenerate_faces = 0;      //!< faces repeating a vertex index
+  int64_t components = 0;            //!< vertex-connected components of the faces
+  int64_t euler = 0;                 //!< V - E + F over vertices used by faces
+  //! Every edge shared by exactly two faces that traverse it in opposite directions.
+  bool closed_oriented() const { return boundary_edges == 0 && nonmanifold_edges == 0 && misoriented_edges == 0; }
+  //! closed_oriented, and no pinched vertex or degenerate face: a closed element.
+  bool closed_manifold() const {
+    return boundary_edges == 0 && nonmanifold_edges == 0 && misoriented_edges == 0 &&
+           pinched_vertices == 0 && degenerate_faces == 0;
+  }
+};
+
+//! Counts the topological defects of `mesh` (see SurfaceReport).
+SurfaceReport inspect_surface(const TriMesh& mesh);
 
 }  // namespace meshquilt

@@ -10,6 +10,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "error.h"
+#include "mesh/disjoint_sets.h"
 
 namespace meshquilt {
 namespace {
@@ -60,14 +61,6 @@ OneRing one_ring(const TriMesh& mesh) {
   return r;
 }
 
-int32_t find_root(std::vector<int32_t>& parent, int32_t v) {
-  while (parent[v] != v) {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
-}
-
 //! Minimizes sum_i |L(w_i) - L(v_i)|^2 + mu sum_rows |sum_k a_k w_k - c|^2 (Eq. 5 and 6 share it).
 std::vector<Vec3> solve_deformation(const TriMesh& mesh, const std::vector<ConstraintRow>& rows, double mu) {
   if (!(mu > 0.0) || !std::isfinite(mu)) {
@@ -83,24 +76,22 @@ std::vector<Vec3> solve_deformation(const TriMesh& mesh, const std::vector<Const
 
   // Parts of the element no constraint reaches have a translation as null space: keep them fixed
   // (their original positions have zero energy) and solve only the constrained parts.
-  std::vector<int32_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets pieces(nv);
   for (int32_t v = 0; v < nv; ++v) {
     for (int32_t k = ring.offsets[v]; k < ring.offsets[v + 1]; ++k) {
-      const int32_t a = find_root(parent, v), b = find_root(parent, ring.ring[k]);
-      if (a != b) parent[a] = b;
+      pieces.unite(v, ring.ring[k]);
     }
   }
   std::vector<uint8_t> constrained_root(nv, 0);
   for (const ConstraintRow& row : rows) {
     for (int k = 0; k < row.count; ++k) {
-      if (row.weight[k] != 0.0 && degree(row.vertex[k]) > 0) constrained_root[find_root(parent, row.vertex[k])] = 1;
+      if (row.weight[k] != 0.0 && degree(row.vertex[k]) > 0) constrained_root[pieces.find(row.vertex[k])] = 1;
     }
   }
   std::vector<int32_t> unknown(nv, -1);
   int32_t m = 0;
   for (int32_t v = 0; v < nv; ++v) {
-    if (degree(v) > 0 && constrained_root[find_root(parent, v)]) unknown[v] = m++;
+    if (degree(v) > 0 && constrained_root[pieces.find(v)]) unknown[v] = m++;
   }
   if (m == 0) return result;
 

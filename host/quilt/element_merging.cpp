@@ -9,8 +9,13 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "mesh/measures.h"
+#include "mesh/topology.h"
 #include "quilt/graph_cut.h"
+#include "quilt/stitching.h"
+#include "spatial/box_grid.h"
 #include "spatial/face_bvh.h"
+#include "spatial/segment_distance.h"
 
 namespace meshquilt {
 namespace {
@@ -33,43 +38,30 @@ std::vector<std::vector<int32_t>> faces_around_vertices(const TriMesh& m) {
   return around;
 }
 
-double point_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = glm::dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + t * ab));
-}
-
-//! Distance to a set of segments, exact up to `cap` and reported as `cap` beyond: a hash grid of
-//! cell size `cap` holds each segment in every cell its box grown by `cap` touches, so the cell
-//! of a query point lists every segment that can be within `cap` of it.
+//! Distance to a set of segments, exact up to `cap` and reported as `cap` beyond: a grid of cell
+//! size `cap` holds each segment in every cell its box grown by `cap` touches, so the cell of a
+//! query point lists every segment that can be within `cap` of it.
 class SegmentDistance {
  public:
-  SegmentDistance(std::vector<std::array<Vec3, 2>> segments, double cap) : segments_(std::move(segments)), cap_(cap) {
+  SegmentDistance(std::vector<std::array<Vec3, 2>> segments, double cap)
+      : segments_(std::move(segments)), cap_(cap), grid_(cap) {
     for (size_t s = 0; s < segments_.size(); ++s) {
       const Vec3 lo = glm::min(segments_[s][0], segments_[s][1]) - cap_, hi = glm::max(segments_[s][0], segments_[s][1]) + cap_;
-      for (int64_t i = cell(lo.x); i <= cell(hi.x); ++i)
-        for (int64_t j = cell(lo.y); j <= cell(hi.y); ++j)
-          for (int64_t k = cell(lo.z); k <= cell(hi.z); ++k) grid_[key(i, j, k)].push_back(static_cast<int32_t>(s));
+      grid_.insert(static_cast<int32_t>(s), lo, hi);
     }
   }
   double operator()(const Vec3& p) const {
-    const auto it = grid_.find(key(cell(p.x), cell(p.y), cell(p.z)));
     double best = cap_;
-    if (it != grid_.end())
-      for (int32_t s : it->second) best = std::min(best, point_segment(p, segments_[s][0], segments_[s][1]));
+    if (const std::vector<int32_t>* near = grid_.items_at(p))
+      for (int32_t s : *near) best = std::min(best, point_segment_distance(p, segments_[s][0], segments_[s][1]));
     return best;
   }
   bool empty() const { return segments_.empty(); }
 
  private:
-  int64_t cell(double x) const { return static_cast<int64_t>(std::floor(x / cap_)); }
-  static uint64_t key(int64_t i, int64_t j, int64_t k) {
-    return static_cast<uint64_t>((i * 73856093) ^ (j * 19349663) ^ (k * 83492791));
-  }
   std::vector<std::array<Vec3, 2>> segments_;
   double cap_;
-  std::unordered_map<uint64_t, std::vector<int32_t>> grid_;
+  BoxGrid grid_;
 };
 
 //! Faces within `radius` (along the dual graph, centroid to centroid) of a seed face.
@@ -141,161 +133,259 @@ MergeResult whole(const TriMesh& m, MergeOutcome outcome, std::string why = {}) 
 
 size_t count_set(const std::vector<uint8_t>& flags) { return static_cast<size_t>(std::count(flags.begin(), flags.end(), 1)); }
 
+//! What both cuts of a related pair read: the two elements, which of their faces lie in the
+//! overlap, and how each covers the other.
+struct MergeContext {
+  MergeContext(const TriMesh& out_element, const TriMesh& in_element, const std::function<bool(const Vec3&)>& in_overlap,
+               const MergeOptions& options)
+      : out(out_element),
+        in(in_element),
+        out_inside(faces_inside(out, in_overlap)),
+        in_inside(faces_inside(in, in_overlap)),
+        edge(std::max(mean_edge_length(out), mean_edge_length(in))),
+        cover(options.coverage_factor * edge),
+        margin(options.seam_margin_factor * edge) {}
+
+  const TriMesh& out;                //!< C_out, the output element
+  const TriMesh& in;                 //!< C_in, the input element
+  std::vector<uint8_t> out_inside;   //!< #F of out: centroid in the overlap
+  std::vector<uint8_t> in_inside;    //!< #F of in: centroid in the overlap
+  double edge;                       //!< larger mean edge length of the two
+  double cover;                      //!< coverage distance
+  double margin;                     //!< seam margin
+};
+
+//! Infinite terminal links of one cut, per face: SOURCE (kept) and SINK (deleted).
+struct TerminalLinks {
+  std::vector<uint8_t> source, sink;
+};
+
+//! Coverage of the output element by the input, and of the input's faces by the output, from the
+//! two elements' BVHs.
+struct Coverage {
+  std::vector<ClosestPoint> out_vertex_to_in;  //!< #V of out: closest input point
+  std::vector<double> out_vertex_distance;     //!< #V of out: Dist(v, C_in), Eq. 7
+  std::vector<ClosestPoint> in_face_to_out;    //!< #F of in: closest output point to the centroid
+  std::vector<uint8_t> in_uncovered;           //!< #F of in: farther than `cover` from the output
+  std::vector<uint8_t> out_uncovered;          //!< #F of out: farther than `cover` from the input
+};
+
+Coverage measure_coverage(const MergeContext& pair, const FaceBvh& out_bvh, const FaceBvh& in_bvh) {
+  Coverage c;
+  c.out_vertex_to_in.resize(pair.out.num_vertices());
+  c.out_vertex_distance.resize(pair.out.num_vertices());
+  for (size_t v = 0; v < pair.out.num_vertices(); ++v) {
+    c.out_vertex_to_in[v] = in_bvh.closest_point(pair.out.positions[v]);
+    c.out_vertex_distance[v] = c.out_vertex_to_in[v].distance;
+  }
+  c.in_face_to_out.resize(pair.in.num_faces());
+  c.in_uncovered.resize(pair.in.num_faces());
+  for (size_t f = 0; f < pair.in.num_faces(); ++f) {
+    c.in_face_to_out[f] = out_bvh.closest_point(centroid(pair.in, f));
+    c.in_uncovered[f] = c.in_face_to_out[f].distance > pair.cover;
+  }
+  c.out_uncovered.resize(pair.out.num_faces());
+  for (size_t f = 0; f < pair.out.num_faces(); ++f)
+    c.out_uncovered[f] = in_bvh.closest_point(centroid(pair.out, f)).distance > pair.cover;
+  return c;
+}
+
+//! The paper's SOURCE rule: output faces outside the overlap are kept.
+std::vector<uint8_t> paper_output_source(const MergeContext& pair) {
+  std::vector<uint8_t> source(pair.out.num_faces());
+  for (size_t f = 0; f < pair.out.num_faces(); ++f) source[f] = !pair.out_inside[f];
+  return source;
+}
+
+//! The paper's SINK rule: output faces in the overlap around a vertex whose corresponding input
+//! face lies outside the overlap or is adjacent to an input face with no corresponding output
+//! vertex. "Corresponding" is read as coverage (within `cover`: with different tessellations many
+//! faces receive no closest vertex at all) and "adjacent" as a band of frontier_factor coverage
+//! distances around uncovered input faces that reach outside the overlap: those are where the
+//! input continues beyond the output. An uncovered island inside the overlap (the input's end cap
+//! sunk inside the output's tube) is where the input ends, and must not push the output's cut
+//! away. Only faces in the overlap: SOURCE wins a conflict.
+std::vector<uint8_t> paper_output_sink(const MergeContext& pair, const Coverage& coverage,
+                                       const std::vector<std::array<int32_t, 3>>& in_neighbors,
+                                       const MergeOptions& options) {
+  const std::vector<uint8_t> in_frontier =
+      grow(pair.in, in_neighbors, reaching_outside(pair.in, in_neighbors, coverage.in_uncovered, pair.in_inside),
+           options.frontier_factor * pair.cover);
+  std::vector<uint8_t> sink(pair.out.num_faces(), 0);
+  const auto around = faces_around_vertices(pair.out);
+  for (size_t v = 0; v < pair.out.num_vertices(); ++v) {
+    const ClosestPoint& cp = coverage.out_vertex_to_in[v];
+    // Only where the input is actually present can it replace the output; deleting output far
+    // from the input would open a gap no seam can close.
+    if (cp.face < 0 || cp.distance > pair.cover) continue;
+    if (pair.in_inside[cp.face] && !in_frontier[cp.face]) continue;
+    for (int32_t f : around[v])
+      if (pair.out_inside[f]) sink[f] = 1;
+  }
+  return sink;
+}
+
+//! Our SOURCE rule, the mirror image of the paper's SINK rule: where the input ends inside the
+//! overlap the output must stay, or the input could not be cut to meet it there. Output faces
+//! near the output's own exclusive region (uncovered by the input, reaching outside the overlap)
+//! are kept unless the paper's SINK rule claims them. The reach adds two seam margins, so that
+//! the input extends past the output's seam far enough to be cut there itself.
+std::vector<uint8_t> output_keep_zone(const MergeContext& pair, const Coverage& coverage,
+                                      const std::vector<std::array<int32_t, 3>>& out_neighbors,
+                                      const MergeOptions& options) {
+  return grow(pair.out, out_neighbors, reaching_outside(pair.out, out_neighbors, coverage.out_uncovered, pair.out_inside),
+              options.frontier_factor * pair.cover + 2.0 * pair.margin);
+}
+
+//! Our SINK rule: the paper's SINK rule alone can yield only small islands (a few faces at the
+//! border of the overlap where both elements coincide, as with interlinked rings); the cheapest
+//! cut then punches a small hole around them instead of handing the overlap to the input. The
+//! input replaces the output in the overlap (as when the output lies wholly inside it), so covered
+//! output faces deep inside the overlap (depth_factor coverage distances from the output's faces
+//! outside it, along the surface) are deleted, unless the keep zone holds them.
+std::vector<uint8_t> output_deep_overlap(const MergeContext& pair, const Coverage& coverage,
+                                         const std::vector<std::array<int32_t, 3>>& out_neighbors,
+                                         const std::vector<uint8_t>& keep_zone, const MergeOptions& options) {
+  std::vector<uint8_t> outside(pair.out.num_faces());
+  for (size_t f = 0; f < pair.out.num_faces(); ++f) outside[f] = !pair.out_inside[f];
+  const std::vector<uint8_t> shallow = grow(pair.out, out_neighbors, outside, options.depth_factor * pair.cover);
+  std::vector<uint8_t> deep(pair.out.num_faces());
+  for (size_t f = 0; f < pair.out.num_faces(); ++f) deep[f] = !shallow[f] && !keep_zone[f] && !coverage.out_uncovered[f];
+  return deep;
+}
+
+//! Terminal links of the output element's cut, the paper's rules and ours side by side, in
+//! precedence: SOURCE = paper SOURCE, or our keep zone where the paper's SINK does not claim the
+//! face; SINK = paper SINK (only in the overlap, so the paper's SOURCE wins), or deep overlap
+//! (never in the keep zone, never outside the overlap).
+TerminalLinks output_terminal_links(const MergeContext& pair, const Coverage& coverage,
+                                    const std::vector<std::array<int32_t, 3>>& out_neighbors,
+                                    const std::vector<std::array<int32_t, 3>>& in_neighbors,
+                                    const MergeOptions& options) {
+  const std::vector<uint8_t> paper_source = paper_output_source(pair);
+  const std::vector<uint8_t> paper_sink = paper_output_sink(pair, coverage, in_neighbors, options);
+  const std::vector<uint8_t> keep_zone = output_keep_zone(pair, coverage, out_neighbors, options);
+  const std::vector<uint8_t> deep = output_deep_overlap(pair, coverage, out_neighbors, keep_zone, options);
+  TerminalLinks links;
+  links.source.resize(pair.out.num_faces());
+  links.sink.resize(pair.out.num_faces());
+  for (size_t f = 0; f < pair.out.num_faces(); ++f) {
+    links.source[f] = paper_source[f] || (keep_zone[f] && !paper_sink[f]);
+    links.sink[f] = paper_sink[f] || deep[f];
+  }
+  return links;
+}
+
+//! Terminal links of the input element's cut, complementary to the output's cut `keep_out`. Two
+//! independent cuts by the paper's rules need not meet: each may keep geometry the other also
+//! keeps (a doubled wall) or both may delete the same stretch (a gap). So input faces nearest
+//! kept output faces are SINK, those nearest deleted output faces SOURCE; input faces the output
+//! does not cover are SOURCE outside the overlap and free inside it (an end cap sunk inside the
+//! output's tube is then dropped with its surroundings); faces within `free_margin` of the
+//! output's cut loops (`to_seam`, #F) are free, so the cut follows the loops.
+TerminalLinks input_terminal_links(const MergeContext& pair, const Coverage& coverage, const std::vector<uint8_t>& keep_out,
+                                   const std::vector<double>& to_seam, double free_margin) {
+  TerminalLinks links;
+  links.source.assign(pair.in.num_faces(), 0);
+  links.sink.assign(pair.in.num_faces(), 0);
+  for (size_t f = 0; f < pair.in.num_faces(); ++f) {
+    if (coverage.in_uncovered[f]) {
+      if (!pair.in_inside[f]) links.source[f] = 1;
+      continue;
+    }
+    if (to_seam[f] <= free_margin) continue;
+    (keep_out[coverage.in_face_to_out[f].face] ? links.sink[f] : links.source[f]) = 1;
+  }
+  return links;
+}
+
+//! Infinite capacities on a cut graph's terminal links.
+void link_terminals(const TerminalLinks& links, CutGraph& graph) {
+  for (size_t f = 0; f < links.source.size(); ++f) {
+    graph.source_caps[f] = links.source[f] ? kInfiniteCapacity : 0.0;
+    graph.sink_caps[f] = links.sink[f] ? kInfiniteCapacity : 0.0;
+  }
+}
+
 }  // namespace
 
 MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element,
                            const std::function<bool(const Vec3&)>& in_overlap, const MergeOptions& options) {
-  const TriMesh& co = out_element;
-  const TriMesh& ci = in_element;
-  if (co.num_faces() == 0) return whole(ci, MergeOutcome::kept_in);
-  if (ci.num_faces() == 0) return whole(co, MergeOutcome::kept_out);
-  const std::vector<uint8_t> inside_out = faces_inside(co, in_overlap);
-  const std::vector<uint8_t> inside_in = faces_inside(ci, in_overlap);
-  const size_t outside_out = co.num_faces() - count_set(inside_out);
-  const size_t outside_in = ci.num_faces() - count_set(inside_in);
-  if (outside_out == 0) return whole(ci, MergeOutcome::kept_in);
-  if (outside_in == 0) return whole(co, MergeOutcome::kept_out);
+  if (out_element.num_faces() == 0) return whole(in_element, MergeOutcome::kept_in);
+  if (in_element.num_faces() == 0) return whole(out_element, MergeOutcome::kept_out);
+  const MergeContext pair(out_element, in_element, in_overlap, options);
+  const size_t out_outside = out_element.num_faces() - count_set(pair.out_inside);
+  const size_t in_outside = in_element.num_faces() - count_set(pair.in_inside);
+  if (out_outside == 0) return whole(in_element, MergeOutcome::kept_in);
+  if (in_outside == 0) return whole(out_element, MergeOutcome::kept_out);
 
   // When no clean stitch exists the more complete element survives whole, the other is dropped.
   auto fall_back = [&](std::string why) {
-    const bool keep_in = outside_in > outside_out || (outside_in == outside_out && ci.num_faces() > co.num_faces());
-    return keep_in ? whole(ci, MergeOutcome::kept_in, std::move(why)) : whole(co, MergeOutcome::kept_out, std::move(why));
+    const bool keep_in = in_outside > out_outside ||
+                         (in_outside == out_outside && in_element.num_faces() > out_element.num_faces());
+    return keep_in ? whole(in_element, MergeOutcome::kept_in, std::move(why))
+                   : whole(out_element, MergeOutcome::kept_out, std::move(why));
   };
 
-  const double edge = std::max(mean_edge_length(co), mean_edge_length(ci));
-  const double cover = options.coverage_factor * edge;
-  const FaceBvh bvh_out(co), bvh_in(ci);
-  const auto nb_out = face_neighbors(co), nb_in = face_neighbors(ci);
+  const FaceBvh out_bvh(out_element), in_bvh(in_element);
+  const auto out_neighbors = face_neighbors(out_element), in_neighbors = face_neighbors(in_element);
+  const Coverage coverage = measure_coverage(pair, out_bvh, in_bvh);
 
-  // --- Cut of the output element (the paper's rules). ---
-  std::vector<ClosestPoint> out_to_in(co.num_vertices());
-  std::vector<double> dist_out(co.num_vertices());
-  for (size_t v = 0; v < co.num_vertices(); ++v) {
-    out_to_in[v] = bvh_in.closest_point(co.positions[v]);
-    dist_out[v] = out_to_in[v].distance;
-  }
-  std::vector<ClosestPoint> in_face_to_out(ci.num_faces());
-  std::vector<uint8_t> uncovered_in(ci.num_faces());
-  for (size_t f = 0; f < ci.num_faces(); ++f) {
-    in_face_to_out[f] = bvh_out.closest_point(centroid(ci, f));
-    uncovered_in[f] = in_face_to_out[f].distance > cover;
-  }
-  // "A face adjacent to f_in with no corresponding vertex in C_out": with different tessellations
-  // many faces receive no closest-vertex at all, so correspondence is read as coverage (distance)
-  // and adjacency as a band of frontier_factor coverage distances around uncovered faces. Only
-  // uncovered regions that reach outside the overlap count: those are where the input continues
-  // beyond the output. An uncovered island inside the overlap (the input's end cap sunk inside
-  // the output's tube) is where the input ends, and must not push the output's cut away.
-  const std::vector<uint8_t> frontier_in =
-      grow(ci, nb_in, reaching_outside(ci, nb_in, uncovered_in, inside_in), options.frontier_factor * cover);
-
-  // The mirror image of that rule: where the input ends inside the overlap, the output must stay,
-  // or the input could not be cut to meet it there. Output faces near the output's own exclusive
-  // region (uncovered by the input, reaching outside the overlap) are kept unless a SINK rule
-  // claims them.
-  std::vector<uint8_t> uncovered_out(co.num_faces());
-  for (size_t f = 0; f < co.num_faces(); ++f) uncovered_out[f] = bvh_in.closest_point(centroid(co, f)).distance > cover;
-  // Its reach adds two seam margins, so that the input extends past the output's seam far enough
-  // to be cut there itself.
-  const double margin = options.seam_margin_factor * edge;
-  const std::vector<uint8_t> keep_zone_out = grow(co, nb_out, reaching_outside(co, nb_out, uncovered_out, inside_out),
-                                                  options.frontier_factor * cover + 2.0 * margin);
-
-  CutGraph g_out = dual_graph(co, nb_out, dist_out);
-  for (size_t f = 0; f < co.num_faces(); ++f)
-    if (!inside_out[f]) g_out.source_caps[f] = kInfiniteCapacity;
-  const auto around_out = faces_around_vertices(co);
-  for (size_t v = 0; v < co.num_vertices(); ++v) {
-    const ClosestPoint& cp = out_to_in[v];
-    // Only where the input is actually present can it replace the output; deleting output far
-    // from the input would open a gap no seam can close.
-    if (cp.face < 0 || cp.distance > cover) continue;
-    if (inside_in[cp.face] && !frontier_in[cp.face]) continue;
-    // SOURCE wins a conflict: the output outside the overlap is never deleted.
-    for (int32_t f : around_out[v])
-      if (inside_out[f]) g_out.sink_caps[f] = kInfiniteCapacity;
-  }
-  for (size_t f = 0; f < co.num_faces(); ++f)
-    if (keep_zone_out[f] && g_out.sink_caps[f] == 0.0) g_out.source_caps[f] = kInfiniteCapacity;
-  // The paper's SINK rule alone can yield only small islands (a few faces at the border of the
-  // overlap where both elements coincide, as with interlinked rings); the cheapest cut then
-  // punches a small hole around them instead of handing the overlap to the input. The input
-  // replaces the output in the overlap (as when the output lies wholly inside it), so covered
-  // output faces deep inside the overlap (depth_factor coverage distances from the output's faces
-  // outside it, along the surface) are SINK-linked too, below the keep rule above.
-  std::vector<uint8_t> out_faces_outside(co.num_faces());
-  for (size_t f = 0; f < co.num_faces(); ++f) out_faces_outside[f] = !inside_out[f];
-  const std::vector<uint8_t> shallow_out = grow(co, nb_out, out_faces_outside, options.depth_factor * cover);
-  for (size_t f = 0; f < co.num_faces(); ++f)
-    if (!shallow_out[f] && !keep_zone_out[f] && !uncovered_out[f]) g_out.sink_caps[f] = kInfiniteCapacity;
-  std::vector<uint8_t> keep_out = minimum_cut(g_out).source_side;
-  tidy_cut(co, nb_out, keep_out);
+  // Cut of the output element: Eq. 7 weights with Dist to the input.
+  CutGraph out_graph = dual_graph(out_element, out_neighbors, coverage.out_vertex_distance);
+  link_terminals(output_terminal_links(pair, coverage, out_neighbors, in_neighbors, options), out_graph);
+  std::vector<uint8_t> keep_out = minimum_cut(out_graph).source_side;
+  tidy_cut(out_element, out_neighbors, keep_out);
   const size_t kept_out_faces = count_set(keep_out);
   if (kept_out_faces == 0) return fall_back("the output element's cut kept nothing");
 
-  std::vector<CutLoop> loops_out;
+  std::vector<CutLoop> out_loops;
   std::string why;
-  if (!cut_loops(co, nb_out, keep_out, loops_out, &why)) return fall_back("output cut: " + why);
-  std::vector<std::array<Vec3, 2>> seam;
-  for (const CutLoop& l : loops_out)
+  if (!cut_loops(out_element, out_neighbors, keep_out, out_loops, &why)) return fall_back("output cut: " + why);
+  std::vector<std::array<Vec3, 2>> out_seam;
+  for (const CutLoop& l : out_loops)
     for (size_t k = 0; k < l.vertices.size(); ++k)
-      seam.push_back({co.positions[l.vertices[k]], co.positions[l.vertices[(k + 1) % l.vertices.size()]]});
+      out_seam.push_back({out_element.positions[l.vertices[k]], out_element.positions[l.vertices[(k + 1) % l.vertices.size()]]});
 
-  // --- Cut of the input element, complementary to the output's. ---
-  // Two independent cuts by the paper's rules need not meet: each may keep geometry the other
-  // also keeps (a doubled wall) or both may delete the same stretch (a gap), and the seams can
-  // lie far apart. So the input's cut is derived from the output's: input faces nearest kept
-  // output faces are deleted, those nearest deleted output faces are kept, and only a margin
-  // around the output's cut loops is left to the minimum cut, whose Eq. 7 weights measure the
-  // distance to those loops, so both seams run side by side.
-  // Beyond a few margins the distance only has to say "far": capped there.
-  const SegmentDistance to_loops(seam, 4.0 * margin);
-  std::vector<double> dist_in(ci.num_vertices());
-  for (size_t v = 0; v < ci.num_vertices(); ++v)
-    dist_in[v] = seam.empty() ? bvh_out.closest_point(ci.positions[v]).distance : to_loops(ci.positions[v]);
-  CutGraph g_in = dual_graph(ci, nb_in, dist_in);
-  std::vector<double> to_seam(ci.num_faces(), std::numeric_limits<double>::infinity());
-  if (!seam.empty())
-    for (size_t f = 0; f < ci.num_faces(); ++f) to_seam[f] = to_loops(centroid(ci, f));
+  // Cut of the input element, complementary to the output's: Eq. 7 weights with the distance to
+  // the output's cut loops, so both seams run side by side. Beyond a few margins the distance only
+  // has to say "far": capped there.
+  const SegmentDistance to_loops(out_seam, 4.0 * pair.margin);
+  std::vector<double> in_vertex_distance(in_element.num_vertices());
+  for (size_t v = 0; v < in_element.num_vertices(); ++v)
+    in_vertex_distance[v] =
+        out_seam.empty() ? out_bvh.closest_point(in_element.positions[v]).distance : to_loops(in_element.positions[v]);
+  CutGraph in_graph = dual_graph(in_element, in_neighbors, in_vertex_distance);
+  std::vector<double> to_seam(in_element.num_faces(), std::numeric_limits<double>::infinity());
+  if (!out_seam.empty())
+    for (size_t f = 0; f < in_element.num_faces(); ++f) to_seam[f] = to_loops(centroid(in_element, f));
   // The margin is tried wide first (a smooth cut of its own), then narrower: when the input reaches
   // only a little past the output's seam, a wide margin can swallow every face that must be
   // deleted, and a wide free band may join two nearby seams into one loop. At margin zero the
   // input's cut is the exact complement of the output's, whose loops then pair one-to-one.
   std::string failure = "the input element was never cut";
   for (double scale : {1.0, 0.5, 0.0}) {
-    std::fill(g_in.source_caps.begin(), g_in.source_caps.end(), 0.0);
-    std::fill(g_in.sink_caps.begin(), g_in.sink_caps.end(), 0.0);
-    bool any_sink = false;
-    for (size_t f = 0; f < ci.num_faces(); ++f) {
-      const ClosestPoint& cp = in_face_to_out[f];
-      if (uncovered_in[f]) {
-        // The input alone is here: outside the overlap it must stay; inside, the cut decides
-        // (an end cap sunk inside the output's tube is then dropped with its surroundings).
-        if (!inside_in[f]) g_in.source_caps[f] = kInfiniteCapacity;
-        continue;
-      }
-      if (to_seam[f] <= scale * margin) continue;
-      (keep_out[cp.face] ? g_in.sink_caps[f] : g_in.source_caps[f]) = kInfiniteCapacity;
-      any_sink = any_sink || keep_out[cp.face];
-    }
-    if (!any_sink && scale > 0.0) continue;
-    std::vector<uint8_t> keep_in = minimum_cut(g_in).source_side;
-    tidy_cut(ci, nb_in, keep_in);
+    const TerminalLinks in_links = input_terminal_links(pair, coverage, keep_out, to_seam, scale * pair.margin);
+    if (count_set(in_links.sink) == 0 && scale > 0.0) continue;
+    link_terminals(in_links, in_graph);
+    std::vector<uint8_t> keep_in = minimum_cut(in_graph).source_side;
+    tidy_cut(in_element, in_neighbors, keep_in);
     const size_t kept_in_faces = count_set(keep_in);
     if (kept_in_faces == 0) {
-      if (kept_out_faces == co.num_faces()) return whole(co, MergeOutcome::kept_out);
+      if (kept_out_faces == out_element.num_faces()) return whole(out_element, MergeOutcome::kept_out);
       failure = "the input element's cut kept nothing to replace the deleted output";
       continue;
     }
-    if (kept_out_faces == co.num_faces()) return fall_back("the output element was not cut but the input keeps faces");
-    if (kept_in_faces == ci.num_faces()) {
+    if (kept_out_faces == out_element.num_faces())
+      return fall_back("the output element was not cut but the input keeps faces");
+    if (kept_in_faces == in_element.num_faces()) {
       failure = "the input element was not cut";
       continue;
     }
     // A failed seam solve is one more reason to keep an element whole, not to stop the synthesis.
     StitchResult stitched;
     try {
-      stitched = stitch_parts(co, keep_out, ci, keep_in, options.stitch);
+      stitched = stitch_parts(out_element, keep_out, in_element, keep_in, options.stitch);
     } catch (const SolverError& e) {
       stitched.failure = std::string("seam deformation: ") + e.what();
     }

@@ -9,13 +9,10 @@
 #include <vector>
 
 #include "mesh/measures.h"  // mean_edge_length, formerly declared here
+#include "mesh/topology.h"  // face_neighbors, inspect_surface, formerly declared here
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
-
-//! Face adjacency across edges: #F x 3, entry k is the face across edge (v[k], v[k+1]); -1 for a
-//! boundary edge, -2 for an edge shared by more than two faces (non-manifold).
-std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh);
 
 //! A closed loop of cut-boundary edges of a kept face set.
 //! vertices  #K vertex indices in order; edge k is vertices[k] -> vertices[(k+1) % K]
@@ -51,7 +48,8 @@ struct StitchOptions {
                                  //!< fraction and 1 - it of the edge (a nearer projection is moved
                                  //!< to that bound; welding to the end is the DP's other choice)
   int32_t start_candidates = 4;  //!< starting correspondences tried per loop pair (nearest first)
-  bool check_intersections = true;  //!< reject seams whose faces cross other faces (cheap check)
+  bool check_intersections = true;  //!< reject seams whose faces meet faces they share no vertex
+                                    //!< with (exact triangles_intersect over a local grid)
 };
 
 struct StitchResult {
@@ -74,27 +72,11 @@ struct StitchResult {
 //! oriented 2-manifolds, a closed oriented 2-manifold without pinched vertices; otherwise the
 //! result is refused (ok = false). Parts lie to the left of their loops (consistent outward
 //! orientation of both inputs).
+//! Steps (stitching.cpp): cut_out_side, pair_loops, align_loop_pair, deform_seam_band, weld_seam,
+//! split_fans, check_seam.
 //! \pre keep_a is #F of a, keep_b is #F of b; vertices welded (shared by index).
 //! \throw SolverError when the deformation solve fails.
 StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, const TriMesh& b,
                           const std::vector<uint8_t>& keep_b, const StitchOptions& options = {});
-
-//! Topology of a triangle mesh, for checking stitched results.
-struct SurfaceReport {
-  int64_t boundary_edges = 0;        //!< undirected edges used by one face
-  int64_t nonmanifold_edges = 0;     //!< undirected edges used by three or more faces
-  int64_t misoriented_edges = 0;     //!< two-face edges traversed in the same direction by both
-  int64_t pinched_vertices = 0;      //!< vertices whose faces form more than one fan
-  int64_t degenerate_faces = 0;      //!< faces repeating a vertex index
-  int64_t components = 0;            //!< vertex-connected components of the faces
-  int64_t euler = 0;                 //!< V - E + F over vertices used by faces
-  bool closed_manifold() const {
-    return boundary_edges == 0 && nonmanifold_edges == 0 && misoriented_edges == 0 &&
-           pinched_vertices == 0 && degenerate_faces == 0;
-  }
-};
-
-//! Counts the topological defects of `mesh` (see SurfaceReport).
-SurfaceReport inspect_surface(const TriMesh& mesh);
 
 }  // namespace meshquilt
