@@ -1,7 +1,9 @@
-// `meshquilt synth`: grows a geometric texture over a plane (Section 2 of the paper).
+// `meshquilt synth`: grows a geometric texture over a plane (Section 2 of the paper) or a base
+// mesh (Section 3).
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,24 +22,17 @@
 #include "progress.h"
 #include "resource_limits.h"
 #include "signals.h"
+#include "synth_command.h"
+#include "mesh/base_mesh.h"
+#include "mesh/measures.h"
+#include "quilt/guidance_field.h"
 #include "quilt/planar_quilting.h"
+#include "quilt/surface_quilting.h"
+#include "render_command.h"
 #include "default_swatch.h"
 
 namespace meshquilt::cli {
 namespace {
-
-struct SynthArgs {
-  std::string swatch;
-  std::string plane = "4x4";
-  uint64_t seed = 1;
-  std::string backend = "auto";
-  std::string stats;
-  std::string progress = "auto";
-  std::string output = "quilt.ply";
-  int cells = 16;
-  int max_patches = 0;
-  bool cleanup = true;
-};
 
 void parse_plane(const std::string& text, double* width, double* height) {
   const size_t x = text.find_first_of("xX");
@@ -62,64 +57,9 @@ void check_mesh_extension(const std::filesystem::path& file) {
     throw IoError(ExitCode::unknown_format, file.string() + ": unknown output format (use .ply, .obj, .off or .stl)");
 }
 
-void run_synth(const SynthArgs& args) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  double width = 0.0, height = 0.0;
-  parse_plane(args.plane, &width, &height);
-  const engine::BackendChoice backend = engine::parse_backend_choice(args.backend);
-  const ProgressMode progress_mode = parse_progress_mode(args.progress);
-  if (args.cells < 4 || args.cells > 256)
-    throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ExitCode::invalid_option);
-  const std::filesystem::path output = args.output;
-  check_mesh_extension(output);
-  check_writable(output);
-  if (!args.stats.empty()) check_writable(args.stats);
-
-  const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
-  // Oriented here as well as in quilt_plane, so a degenerate swatch is reported by file name.
-  const TriMesh swatch = orient_swatch(args.swatch.empty() ? default_swatch() : read_mesh(args.swatch), swatch_name);
-  check_synth_memory(swatch, width, height);
-
-  std::string note;
-  std::unique_ptr<engine::Device> device = engine::open_device(backend, &note);
-  if (!note.empty()) std::cerr << "meshquilt: " << note << "\n";
-
-  ProgressReporter progress(progress_mode, "synth");
-  PlanarQuiltOptions options;
-  options.width = width;
-  options.height = height;
-  options.seed = args.seed;
-  options.cells_across_swatch = args.cells;
-  options.max_patches = args.max_patches;
-  options.cleanup = args.cleanup;
-  options.cancel = &interrupt_token();
-  options.progress = [&](const QuiltProgress& p) {
-    check_interrupted();  // stops after the current patch until the scheduler polls options.cancel
-    progress.update(p.processed_cells, p.total_cells);
-  };
-  QuiltStats stats;
-  const TriMesh result = quilt_plane(swatch, *device, options, &stats);
-
-  const auto write_start = Clock::now();
-  check_interrupted();
-  write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
-  stats.stage_seconds["write"] = std::chrono::duration<double>(Clock::now() - write_start).count();
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-
-  int32_t elements = 0;
-  for (int32_t e : result.elements) elements = std::max(elements, e + 1);
-  nlohmann::json summary = {
-      {"output", output.string()},
-      {"swatch", swatch_name},
-      {"faces", result.num_faces()},
-      {"vertices", result.num_vertices()},
-      {"elements", elements},
-      {"seconds", seconds},
-      {"backend", engine::backend_name(device->backend())},
-      {"device", device->name()},
-      {"seed", args.seed},
-      {"plane", {width, height}},
+// What either driver reports, for the stats JSON.
+nlohmann::json quilt_summary(const QuiltStats& stats) {
+  return {
       {"patches", stats.patches},
       {"stitched_pairs", stats.merges.stitched},
       {"replaced_elements", stats.merges.replaced},
@@ -127,6 +67,7 @@ void run_synth(const SynthArgs& args) {
       {"rejected_inputs", stats.merges.rejected_inputs},
       {"refused_merges", stats.merges.refused_merges},
       {"undone_deformations", stats.merges.undone_deformations},
+      {"refused_pinned", stats.merges.refused_pinned},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
       {"dropped_intersecting", stats.dropped_intersecting},
@@ -137,30 +78,132 @@ void run_synth(const SynthArgs& args) {
       {"largest_hole_area", stats.largest_hole_area},
       {"stages", stats.stage_seconds},
   };
-  if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
-  progress.finish(summary.dump());
-  if (progress_mode != ProgressMode::json)
-    std::printf("wrote %s: %zu faces, %d elements (%d dropped) in %.1f s on %s\n", output.string().c_str(),
-                result.num_faces(), elements, stats.dropped_elements, seconds, device->name().c_str());
 }
 
 }  // namespace
 
+void run_synth(const SynthArgs& args) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const bool curved = !args.base.empty();
+  double width = 0.0, height = 0.0;
+  if (!curved) parse_plane(args.plane, &width, &height);
+  if (curved && !(args.scale > 0.0 && args.scale <= 10.0))
+    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ExitCode::invalid_option);
+  if (curved && !(args.shell_height >= 0.0 && std::isfinite(args.shell_height)))
+    throw InputError("--shell-height: expected a non-negative length", ExitCode::invalid_option);
+  if (!curved && (!args.field.empty() || !args.write_field.empty()))
+    throw InputError("--field and --write-field need --base", ExitCode::invalid_option);
+  const engine::BackendChoice backend = engine::parse_backend_choice(args.backend);
+  const ProgressMode progress_mode = parse_progress_mode(args.progress);
+  if (args.cells < 4 || args.cells > 256)
+    throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ExitCode::invalid_option);
+  const std::filesystem::path output = args.output;
+  check_mesh_extension(output);
+  check_writable(output);
+  if (!args.stats.empty()) check_writable(args.stats);
+  if (!args.write_field.empty()) check_writable(args.write_field);
+  RenderOptions preview_options;
+  preview_options.width = 900;
+  preview_options.height = 700;
+  preview_options.mode = RenderMode::elements;
+  if (!args.preview.empty()) {
+    if (std::filesystem::path(args.preview).extension() != ".png")
+      throw IoError(ExitCode::unknown_format, args.preview + ": previews are PNG files (use .png)");
+    check_writable(args.preview);
+  }
+
+  const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
+  // Oriented here as well as in the drivers, so a degenerate swatch is reported by file name.
+  const TriMesh swatch = orient_swatch(args.swatch.empty() ? default_swatch() : read_mesh(args.swatch), swatch_name);
+  TriMesh base;
+  std::vector<FieldConstraint> constraints;
+  if (curved) {
+    base = prepare_base(read_mesh(args.base), args.base);
+    if (!args.field.empty()) constraints = read_field_file(args.field, base);
+  } else {
+    check_synth_memory(swatch, width, height);
+  }
+
+  std::string note;
+  std::unique_ptr<engine::Device> device = engine::open_device(backend, &note);
+  if (!note.empty()) std::cerr << "meshquilt: " << note << "\n";
+
+  ProgressReporter progress(progress_mode, "synth");
+  QuiltOptions common;
+  common.seed = args.seed;
+  common.cells_across_swatch = args.cells;
+  common.max_patches = args.max_patches;
+  common.cleanup = args.cleanup;
+  common.cancel = &interrupt_token();
+  common.progress = [&](const QuiltProgress& p) {
+    check_interrupted();  // stops after the current patch until the scheduler polls options.cancel
+    progress.update(p.covered_area, p.total_area);
+  };
+
+  TriMesh result;
+  nlohmann::json summary;
+  if (curved) {
+    SurfaceQuiltOptions options;
+    static_cast<QuiltOptions&>(options) = common;
+    options.scale = args.scale;
+    options.shell_height = args.shell_height;
+    const BaseSurface surface(base);
+    const GuidanceField field = interpolate_field(surface, constraints);
+    if (!args.write_field.empty()) write_field_obj(surface, field, 0.5 * mean_edge_length(base), args.write_field);
+    SurfaceQuiltStats stats;
+    result = quilt_surface(swatch, base, field, *device, options, &stats);
+    summary = quilt_summary(stats);
+    summary["base"] = args.base;
+    summary["base_faces"] = stats.base_faces;
+    summary["scale"] = args.scale;
+    summary["shrunk_patches"] = stats.shrunk_patches;
+    summary["outside_vertices"] = stats.outside_vertices;
+    summary["shell_height"] = stats.shell_height;
+    summary["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;
+    summary["hole_area"] = stats.hole_area;
+    summary["covered_area"] = stats.covered_area;
+    summary["field"] = args.field.empty() ? "default" : args.field;
+  } else {
+    PlanarQuiltOptions options;
+    static_cast<QuiltOptions&>(options) = common;
+    options.width = width;
+    options.height = height;
+    QuiltStats stats;
+    result = quilt_plane(swatch, *device, options, &stats);
+    summary = quilt_summary(stats);
+    summary["plane"] = {width, height};
+  }
+
+  const auto write_start = Clock::now();
+  check_interrupted();
+  write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
+  if (!args.preview.empty()) write_preview(result, args.preview, preview_options);
+  summary["stages"]["write"] = std::chrono::duration<double>(Clock::now() - write_start).count();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+  int32_t elements = 0;
+  for (int32_t e : result.elements) elements = std::max(elements, e + 1);
+  summary["output"] = output.string();
+  summary["swatch"] = swatch_name;
+  summary["faces"] = result.num_faces();
+  summary["vertices"] = result.num_vertices();
+  summary["elements"] = elements;
+  summary["seconds"] = seconds;
+  summary["backend"] = engine::backend_name(device->backend());
+  summary["device"] = device->name();
+  summary["seed"] = args.seed;
+  if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
+  progress.finish(summary.dump());
+  if (progress_mode != ProgressMode::json)
+    std::printf("wrote %s: %zu faces, %d elements (%d dropped) in %.1f s on %s\n", output.string().c_str(),
+                result.num_faces(), elements, summary["dropped_elements"].get<int>(), seconds, device->name().c_str());
+}
+
 void add_synth_command(CLI::App& app) {
   auto args = std::make_shared<SynthArgs>();
-  CLI::App* cmd = app.add_subcommand("synth", "Grow a geometric texture over a plane by mesh quilting");
-  cmd->add_option("--swatch", args->swatch, "swatch mesh (OBJ, PLY, OFF, STL); default: a built-in chain mail");
-  cmd->add_option("--plane", args->plane, "output size WxH in swatch extents")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "seed of every random choice")->capture_default_str();
-  cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where matching costs are computed")->capture_default_str();
-  cmd->add_option("--stats", args->stats, "write statistics (faces, elements, seconds per stage) as JSON");
-  cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();
-  cmd->add_option("--cells", args->cells, "grid cells along the swatch's shorter side")->capture_default_str();
-  cmd->add_option("--max-patches", args->max_patches, "stop after this many patches (0: fill the plane)");
-  cmd->add_flag("!--no-cleanup", args->cleanup, "keep elements that could not be made whole");
-  add_max_memory_option(cmd);
-  cmd->add_option("-o,--output", args->output, "output mesh (.ply with element ids, .obj with groups, .off, .stl)")
-      ->capture_default_str();
+  CLI::App* cmd = app.add_subcommand("synth", "Grow a geometric texture over a plane or a base mesh by mesh quilting");
+  add_synth_options(cmd, *args);
   cmd->callback([args] { run_synth(*args); });
 }
 

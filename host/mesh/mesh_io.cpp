@@ -500,8 +500,9 @@ template <typename Reader>
 void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool& has_element_ids,
                    const std::string& name) {
   std::vector<int32_t> polygon;
-  std::vector<int32_t> elements;
+  std::vector<int32_t> elements, sources;
   bool seen_vertices = false;
+  bool has_sources = false;
   // Honest counts: every element's items need at least min_row_bytes each, so a header that
   // declares more than the data can hold (2^31 faces in a 1 KB file) is refused up front, and
   // so is a mesh the memory budget cannot take, before anything is allocated.
@@ -538,7 +539,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
     const auto bound = static_cast<int64_t>(reader.remaining() / reader.min_row_bytes(element));
     const bool is_vertex = element.name == "vertex";
     const bool is_face = element.name == "face";
-    int ix = -1, iy = -1, iz = -1, iindices = -1, ielement = -1;
+    int ix = -1, iy = -1, iz = -1, iindices = -1, ielement = -1, isource = -1;
     if (is_vertex) {
       ix = find_property(element, {"x"});
       iy = find_property(element, {"y"});
@@ -557,11 +558,14 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
       ielement = find_property(element, {"element"});
       if (ielement >= 0 && element.properties[ielement].is_list) ielement = -1;
       has_element_ids = ielement >= 0;
+      isource = find_property(element, {"source"});
+      if (isource >= 0 && element.properties[isource].is_list) isource = -1;
+      has_sources = isource >= 0;
       mesh.triangles.reserve(static_cast<size_t>(std::min(element.count, bound)));
     }
     for (int64_t item = 0; item < element.count; ++item) {
       Vec3 p(0.0);
-      int32_t element_id = 0;
+      int32_t element_id = 0, source_id = 0;
       for (size_t k = 0; k < element.properties.size(); ++k) {
         const PlyProperty& property = element.properties[k];
         const int index = static_cast<int>(k);
@@ -576,6 +580,12 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
               parse_fail(name, "PLY face " + std::to_string(item) + " has a bad element id");
             }
             element_id = static_cast<int32_t>(value);
+          }
+          if (index == isource) {
+            if (!(value >= 0.0 && value <= std::numeric_limits<int32_t>::max())) {
+              parse_fail(name, "PLY face " + std::to_string(item) + " has a bad source id");
+            }
+            source_id = static_cast<int32_t>(value);
           }
           continue;
         }
@@ -605,10 +615,12 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
         const size_t before = mesh.triangles.size();
         push_fan(mesh.triangles, polygon);
         if (has_element_ids) elements.insert(elements.end(), mesh.triangles.size() - before, element_id);
+        if (has_sources) sources.insert(sources.end(), mesh.triangles.size() - before, source_id);
       }
     }
   }
   if (has_element_ids) mesh.elements = std::move(elements);
+  if (has_sources) mesh.sources = std::move(sources);
 }
 
 TriMesh read_ply(std::string_view data, const std::string& name) {
@@ -768,6 +780,8 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
   append_int(out, static_cast<int64_t>(mesh.triangles.size()));
   out += "\nproperty list uchar int vertex_indices\n";
   if (with_elements) out += "property int element\n";
+  const bool with_sources = mesh.sources.size() == mesh.triangles.size() && !mesh.sources.empty();
+  if (with_sources) out += "property int source\n";
   out += "end_header\n";
   for (const Vec3& p : mesh.positions) {
     if (binary) {
@@ -785,6 +799,7 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
       out += static_cast<char>(3);
       for (int32_t i : t) append_binary(out, i, true);
       if (with_elements) append_binary(out, mesh.elements[f], true);
+      if (with_sources) append_binary(out, mesh.sources[f], true);
     } else {
       out += '3';
       for (int32_t i : t) {
@@ -794,6 +809,10 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
       if (with_elements) {
         out += ' ';
         append_int(out, mesh.elements[f]);
+      }
+      if (with_sources) {
+        out += ' ';
+        append_int(out, mesh.sources[f]);
       }
       out += '\n';
     }

@@ -77,11 +77,13 @@ TriMesh compact(const TriMesh& mesh, const std::vector<Tri>& triangles, const st
     out.positions.push_back(mesh.positions[v]);
   }
   const bool with_elements = !mesh.elements.empty();
+  const bool with_sources = mesh.sources.size() == mesh.triangles.size();
   for (size_t f = 0; f < triangles.size(); ++f) {
     if (!keep[f]) continue;
     const Tri& t = triangles[f];
     out.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
     if (with_elements) out.elements.push_back(mesh.elements[f]);
+    if (with_sources && !mesh.sources.empty()) out.sources.push_back(mesh.sources[f]);
   }
   return out;
 }

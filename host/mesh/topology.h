@@ -15,7 +15,7 @@ inline constexpr double kWeldTolerance = 1e-6;
 
 //! Merges vertices closer than `relative_tolerance` x bbox diagonal (exactly: grid hashing plus a
 //! distance check), drops unreferenced vertices and faces that become degenerate (two equal
-//! indices). Keeps `elements` aligned with the surviving faces.
+//! indices). Keeps `elements` and `sources` aligned with the surviving faces.
 //! Each vertex, in input order, joins the earliest kept vertex within the tolerance (greedy, not
 //! transitive: a chain of points each closer than the tolerance may keep several); surviving
 //! vertices keep their input order, so the result is deterministic.

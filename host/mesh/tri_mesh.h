@@ -17,10 +17,13 @@ using Tri = std::array<int32_t, 3>;
 //! triangles  #F vertex indices, counter-clockwise seen from outside
 //! elements   #F element id per face, or empty when not known (elements are then the
 //!            vertex-connected components, see topology.h)
+//! sources    #F index of the swatch element each face was copied from, or empty (quilted
+//!            outputs carry it, so the wefts of a weave can be told from its warps)
 struct TriMesh {
   std::vector<Vec3> positions;
   std::vector<Tri> triangles;
   std::vector<int32_t> elements;
+  std::vector<int32_t> sources;
 
   size_t num_vertices() const { return positions.size(); }
   size_t num_faces() const { return triangles.size(); }

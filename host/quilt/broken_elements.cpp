@@ -4,7 +4,6 @@
 #include <map>
 
 #include "mesh/topology.h"
-#include "quilt/stitching.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {

@@ -18,19 +18,22 @@ void HoleTracker::attempted(int cell) {
   seeds_.mark_processed(cell);
 }
 
-HoleSummary HoleTracker::summary(const std::vector<std::vector<int32_t>>& neighbours) const {
+HoleSummary HoleTracker::summary(const std::vector<std::vector<int32_t>>& neighbours,
+                                 const std::vector<double>& cell_areas) const {
   HoleSummary s;
   std::vector<uint8_t> seen(hole_.size(), 0);
   std::vector<int32_t> stack;
   for (size_t start = 0; start < hole_.size(); ++start) {
     if (!hole_[start] || seen[start]) continue;
     int size = 0;
+    double area = 0.0;
     seen[start] = 1;
     stack.assign(1, static_cast<int32_t>(start));
     while (!stack.empty()) {
       const int32_t c = stack.back();
       stack.pop_back();
       ++size;
+      area += cell_areas.empty() ? 1.0 : cell_areas[c];
       for (int32_t n : neighbours[c])
         if (hole_[n] && !seen[n]) {
           seen[n] = 1;
@@ -40,6 +43,8 @@ HoleSummary HoleTracker::summary(const std::vector<std::vector<int32_t>>& neighb
     ++s.holes;
     s.cells += size;
     s.largest_cells = std::max(s.largest_cells, size);
+    s.area += area;
+    s.largest_area = std::max(s.largest_area, area);
   }
   return s;
 }

@@ -13,6 +13,8 @@ struct HoleSummary {
   int holes = 0;          //!< connected groups of hole cells
   int cells = 0;          //!< hole cells
   int largest_cells = 0;  //!< cells in the largest group
+  double area = 0.0;          //!< summed cell areas of all hole cells
+  double largest_area = 0.0;  //!< area of the largest group (by area)
 };
 
 //! Counts the patches seeded on each cell and gives up on a cell after `attempts` of them.
@@ -25,8 +27,10 @@ class HoleTracker {
   //! number of attempts it becomes a hole and is marked processed.
   void attempted(int cell);
 
-  //! Hole cells grouped by `neighbours` (#cells adjacency lists, as for SeedFinder).
-  HoleSummary summary(const std::vector<std::vector<int32_t>>& neighbours) const;
+  //! Hole cells grouped by `neighbours` (#cells adjacency lists, as for SeedFinder); areas from
+  //! `cell_areas` (#cells), or 1 per cell when it is empty.
+  HoleSummary summary(const std::vector<std::vector<int32_t>>& neighbours,
+                      const std::vector<double>& cell_areas = {}) const;
 
   const std::vector<uint8_t>& hole_cells() const { return hole_; }
 

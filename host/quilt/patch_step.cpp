@@ -7,29 +7,14 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "quilt/quilt_policies.h"
-#include "quilt/stitching.h"
 #include "quilt/stage_timer.h"
 
 namespace meshquilt {
 namespace {
-
-// Area-weighted vertex normals: Eq. 1 compares them with the swatch's face normals.
-std::vector<Vec3> area_weighted_normals(const TriMesh& mesh) {
-  std::vector<Vec3> normals(mesh.num_vertices(), Vec3(0.0));
-  for (const Tri& t : mesh.triangles) {
-    const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                              mesh.positions[t[2]] - mesh.positions[t[0]]);
-    for (int k = 0; k < 3; ++k) normals[t[k]] += n;
-  }
-  for (Vec3& n : normals) {
-    const double len = glm::length(n);
-    n = len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0);
-  }
-  return normals;
-}
 
 TriMesh translated(const TriMesh& mesh, const glm::dvec2& t) {
   TriMesh out = mesh;
@@ -58,7 +43,7 @@ void sub_patch_samples(const std::vector<PlaneElement>& layer, const Rect2& sub_
                        std::vector<Vec3>& normals) {
   for (const PlaneElement& e : layer) {
     if (!e.alive || !e.bounds.overlaps(sub_patch)) continue;
-    const std::vector<Vec3> n = area_weighted_normals(e.mesh);
+    const std::vector<Vec3> n = vertex_normals(e.mesh);
     for (size_t v = 0; v < e.mesh.num_vertices(); ++v) {
       if (!sub_patch.contains(e.mesh.positions[v])) continue;
       points.push_back(e.mesh.positions[v]);
@@ -78,7 +63,7 @@ void rasterize_faces(const TriMesh& m, const PlaneGrid& grid, std::vector<uint8_
 }
 
 // Cells whose centre lies inside the footprint, one cell away from its edges inside the domain,
-// and over which kept geometry lies or the placed swatch has none.
+// and over which (within a cell) kept geometry lies or the placed swatch has none.
 std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
                                    const Rect2& footprint, const PlaneGrid& grid,
                                    const std::function<bool(const glm::dvec2&)>& inside_domain) {
@@ -87,6 +72,15 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   for (const PlaneElement& e : layer)
     if (e.alive && e.bounds.overlaps(footprint)) rasterize_faces(e.mesh, grid, kept);
   for (const TriMesh& m : placed) rasterize_faces(m, grid, swatch);
+  // Kept geometry within one cell counts: neighbouring patches register their elements a little
+  // apart, and a cell between a kept element and where the swatch had one is not a hole.
+  std::vector<uint8_t> near_kept = kept;
+  for (int y = 0; y < grid.ny; ++y)
+    for (int x = 0; x < grid.nx; ++x) {
+      if (!kept[grid.index(x, y)]) continue;
+      for (int v = std::max(0, y - 1); v <= std::min(grid.ny - 1, y + 1); ++v)
+        for (int u = std::max(0, x - 1); u <= std::min(grid.nx - 1, x + 1); ++u) near_kept[grid.index(u, v)] = 1;
+    }
   // A cell next to the footprint's edge is where the next patch's seam goes, unless the domain
   // ends there.
   const auto settled = [&](const glm::dvec2& p) { return footprint.contains(p) || !inside_domain(p); };
@@ -96,7 +90,7 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
     for (int x = x0; x <= x1; ++x) {
       const glm::dvec2 centre = grid.origin + grid.cell * glm::dvec2(x + 0.5, y + 0.5);
       const size_t k = grid.index(x, y);
-      if (!footprint.contains(centre) || !inside_domain(centre) || !(kept[k] || !swatch[k])) continue;
+      if (!footprint.contains(centre) || !inside_domain(centre) || !(near_kept[k] || !swatch[k])) continue;
       const double d = grid.cell;
       if (settled(centre + glm::dvec2(d, 0.0)) && settled(centre - glm::dvec2(d, 0.0)) &&
           settled(centre + glm::dvec2(0.0, d)) && settled(centre - glm::dvec2(0.0, d)))
@@ -165,11 +159,7 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
     swatch.element_bounds.push_back(xy_bounds(e));
     swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();
   }
-  double edge_sum = 0.0;
-  for (const Tri& t : swatch.mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      edge_sum += glm::distance(swatch.mesh.positions[t[k]], swatch.mesh.positions[t[(k + 1) % 3]]);
-  swatch.mean_edge = edge_sum / (3.0 * static_cast<double>(swatch.mesh.num_faces()));
+  swatch.mean_edge = mean_edge_length(swatch.mesh);
   return swatch;
 }
 

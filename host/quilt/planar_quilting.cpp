@@ -117,10 +117,17 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   stats.hole_cells = hole_summary.cells;
   stats.largest_hole_area = hole_summary.largest_cells * cell * cell;
   std::vector<TriMesh> kept;
+  std::vector<int32_t> kept_sources;
   for (size_t i = 0; i < layer.size(); ++i)
-    if (alive[i]) kept.push_back(std::move(layer[i].mesh));
+    if (alive[i]) {
+      kept.push_back(std::move(layer[i].mesh));
+      kept_sources.push_back(layer[i].source);
+    }
   if (stats_out) *stats_out = stats;
-  return join_elements(kept);
+  TriMesh result = join_elements(kept);
+  result.sources.resize(result.num_faces());
+  for (size_t f = 0; f < result.num_faces(); ++f) result.sources[f] = kept_sources[result.elements[f]];
+  return result;
 }
 
 }  // namespace meshquilt

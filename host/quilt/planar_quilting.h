@@ -20,7 +20,7 @@ struct PlanarQuiltOptions : QuiltOptions {
 
 //! Grows a planar layer of `options.width x options.height` swatch extents from `swatch` (any
 //! orientation: it is put in its swatch frame first). Returns the output mesh with per-face
-//! element ids. \throw InputError for a degenerate swatch; DeviceError, SolverError; Cancelled.
+//! element ids and sources (the swatch element each face was copied from). \throw InputError for a degenerate swatch; DeviceError, SolverError; Cancelled.
 TriMesh quilt_plane(const TriMesh& swatch, engine::Device& device, const PlanarQuiltOptions& options,
                     QuiltStats* stats = nullptr);
 

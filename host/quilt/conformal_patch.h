@@ -1,0 +1,77 @@
+#pragma once
+//! Local surface patches and their conformal parameter planes (Section 3.1 of the mesh quilting
+//! paper): a patch grows from a seed point over the base until it holds a disk of a given radius,
+//! and is flattened by least-squares conformal maps (LSCM, Levy et al. 2002), one sparse solve.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "mesh/tri_mesh.h"
+
+namespace meshquilt {
+
+//! A point on the base: a face and the barycentrics of the point in it (b0 = 1 - b1 - b2).
+struct SurfacePoint {
+  int32_t face = -1;
+  glm::dvec2 bary{0.0};  //!< (b1, b2)
+};
+
+//! What patches need of a base mesh, computed once.
+struct BaseSurface {
+  explicit BaseSurface(const TriMesh& base);
+  const TriMesh& mesh;
+  std::vector<Vec3> vertex_normals;                             //!< #V, area weighted, unit
+  std::vector<Vec3> face_normals;                               //!< #F, unit (0 for a degenerate face)
+  std::vector<double> face_areas;                               //!< #F
+  std::vector<std::vector<int32_t>> vertex_faces;               //!< #V, faces around each vertex
+  std::vector<std::vector<std::pair<int32_t, double>>> edges;  //!< #V, (neighbour, edge length)
+  double area = 0.0;                                            //!< total area
+  double diagonal = 0.0;                                        //!< bounding-box diagonal
+
+  Vec3 position(const SurfacePoint& p) const;  //!< the point in space
+  Vec3 normal(const SurfacePoint& p) const;    //!< interpolated vertex normal, unit
+};
+
+//! A patch of base faces with a parameter plane. Plane coordinates are in base units, the seed
+//! point at the origin, orientation preserving (the base's outward normal is the plane's +z).
+struct SurfacePatch {
+  std::vector<int32_t> faces;     //!< base faces in the patch
+  std::vector<int32_t> vertices;  //!< base vertices of those faces (patch vertex -> base vertex)
+  std::vector<glm::dvec2> uv;     //!< #vertices plane coordinates
+  double radius = 0.0;            //!< geodesic radius (along edges) it was grown to
+  double area_distortion = 1.0;   //!< max over min over faces of plane area / base area
+  int flipped_faces = 0;          //!< faces whose plane image is mirrored
+  bool closed = false;            //!< the patch has no boundary (a whole closed component)
+
+  //! Plane position of a surface point on a patch face. \pre face_index(p.face) >= 0
+  glm::dvec2 to_plane(const SurfacePoint& p) const;
+  //! The patch face holding a plane point, with barycentrics; std::nullopt outside the patch.
+  std::optional<SurfacePoint> locate(const glm::dvec2& p) const;
+  //! The patch face nearest to a plane point, barycentrics clamped to it (for points outside).
+  SurfacePoint nearest(const glm::dvec2& p) const;
+  //! Index of a base face in `faces`, or -1.
+  int32_t face_index(int32_t base_face) const;
+  //! Applies p -> rotation(angle) * p * scale to every plane coordinate.
+  void transform(double angle, double scale);
+  //! Builds the point-location grid; call after the last transform.
+  void index();
+
+  std::vector<int32_t> local_vertex_of_face_;  // #faces x 3, patch vertex indices
+  std::vector<int32_t> sorted_faces_;          // (base face) sorted, with positions below
+  std::vector<int32_t> sorted_positions_;
+  glm::dvec2 grid_lo_{0.0};
+  double grid_cell_ = 1.0;
+  int grid_nx_ = 0, grid_ny_ = 0;
+  std::vector<int32_t> grid_offsets_, grid_faces_;
+};
+
+//! Grows a patch from `seed` over the faces reachable along edges within `radius` (a face joins
+//! when one of its vertices does; distances start from the seed point) and flattens it by LSCM,
+//! scaled so the plane area equals the base area, translated so the seed is the origin.
+//! \throw SolverError when the LSCM system cannot be solved.
+SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius);
+
+}  // namespace meshquilt
