@@ -36,8 +36,9 @@ struct GuidanceField {
 };
 
 //! Spreads the constraints over the base: the vector Laplacian (uniform weights over edges) is
-//! minimized with the constrained vertices held at their directions' unit tangent parts, plus a weak pull (weight `regularization`) toward
-//! the default field; the result is projected to each vertex's tangent plane and normalized.
+//! minimized with the constrained vertices held at their directions' unit tangent parts (a
+//! direction's length does not matter), plus a weak pull (weight `regularization`) toward the
+//! default field; the result is projected to each vertex's tangent plane and normalized.
 //! The default field (all of it without constraints, and what unconstrained components follow) is
 //! the base's principal axis (largest variance of its area-weighted vertices) projected to each
 //! tangent plane: smooth and coherent, it runs along the object's length, and its singularities
