@@ -1,0 +1,232 @@
+// Mesh quilting over base meshes end to end (Section 3.1 of the paper): coverage, heights,
+// element integrity and intersections measured independently of the driver; scale; back ends.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "device.h"
+#include "inspect/coverage.h"
+#include "mesh/base_mesh.h"
+#include "mesh/mesh_io.h"
+#include "mesh/topology.h"
+#include "quilt/surface_quilting.h"
+#include "spatial/intersecting_pairs.h"
+#include "swatch/chainmail.h"
+#include "swatch/weave.h"
+
+namespace meshquilt {
+namespace {
+
+const std::filesystem::path kShared = MESHQUILT_SHARED_DIR;
+const std::filesystem::path kSource = MESHQUILT_SOURCE_DIR;
+
+struct SurfaceQuality {
+  int elements = 0;
+  int closed = 0;
+  double intersecting_share = 0.0;  // faces in a pair of different elements / faces
+  double coverage = 0.0;            // base area with an output vertex within the cover radius
+  double height_min = 0.0;          // bbox diagonals
+  double height_max = 0.0;
+};
+
+double bbox_diagonal(const TriMesh& mesh) {
+  Vec3 lo(1e300), hi(-1e300);
+  for (const Vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return glm::length(hi - lo);
+}
+
+// Area-weighted sample points of the base; each counts as covered when an output vertex lies
+// within `radius` (a hash grid of the output vertices, brute force inside each bucket).
+double sampled_coverage(const TriMesh& base, const TriMesh& output, double radius, int samples) {
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (const Tri& t : base.triangles) {
+    total += 0.5 * glm::length(glm::cross(base.positions[t[1]] - base.positions[t[0]],
+                                          base.positions[t[2]] - base.positions[t[0]]));
+    cumulative.push_back(total);
+  }
+  std::unordered_map<int64_t, std::vector<Vec3>> grid;
+  const auto key = [radius](int64_t x, int64_t y, int64_t z) { return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791); };
+  for (const Vec3& p : output.positions)
+    grid[key(std::floor(p.x / radius), std::floor(p.y / radius), std::floor(p.z / radius))].push_back(p);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  int covered = 0;
+  for (int s = 0; s < samples; ++s) {
+    const size_t f = std::lower_bound(cumulative.begin(), cumulative.end(), uniform(rng) * total) - cumulative.begin();
+    const Tri& t = base.triangles[std::min(f, base.num_faces() - 1)];
+    double a = uniform(rng), b = uniform(rng);
+    if (a + b > 1.0) {
+      a = 1.0 - a;
+      b = 1.0 - b;
+    }
+    const Vec3 p = (1.0 - a - b) * base.positions[t[0]] + a * base.positions[t[1]] + b * base.positions[t[2]];
+    const int64_t x = std::floor(p.x / radius), y = std::floor(p.y / radius), z = std::floor(p.z / radius);
+    bool hit = false;
+    for (int64_t dz = -1; dz <= 1 && !hit; ++dz)
+      for (int64_t dy = -1; dy <= 1 && !hit; ++dy)
+        for (int64_t dx = -1; dx <= 1 && !hit; ++dx) {
+          const auto it = grid.find(key(x + dx, y + dy, z + dz));
+          if (it == grid.end()) continue;
+          for (const Vec3& q : it->second)
+            if (glm::distance(p, q) <= radius) {
+              hit = true;
+              break;
+            }
+        }
+    covered += hit;
+  }
+  return static_cast<double>(covered) / samples;
+}
+
+// Cover radius from the swatch: half the median x-y extent of its elements, at the run's scale.
+double swatch_cover_radius(const TriMesh& swatch, double unit) {
+  std::vector<double> extents;
+  for (const TriMesh& e : split_elements(swatch)) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const Vec3& p : e.positions) {
+      lo = glm::min(lo, glm::dvec2(p));
+      hi = glm::max(hi, glm::dvec2(p));
+    }
+    extents.push_back(std::max(hi.x - lo.x, hi.y - lo.y));
+  }
+  std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+  return 0.5 * extents[extents.size() / 2] * unit;
+}
+
+SurfaceQuality measure(const TriMesh& output, const TriMesh& base, double cover_radius) {
+  SurfaceQuality q;
+  for (const TriMesh& e : split_elements(output)) {
+    ++q.elements;
+    q.closed += inspect_surface(weld_vertices(e)).closed_manifold();
+  }
+  const auto pairs = intersecting_face_pairs(output, output.elements, IntersectionScope::different_elements);
+  std::vector<uint8_t> hit(output.num_faces(), 0);
+  for (const auto& [a, b] : pairs) hit[a] = hit[b] = 1;
+  q.intersecting_share = static_cast<double>(std::count(hit.begin(), hit.end(), 1)) / output.num_faces();
+  q.coverage = sampled_coverage(base, output, cover_radius, 20000);
+  const std::vector<double> heights = signed_heights(output.positions, base);
+  q.height_min = *std::min_element(heights.begin(), heights.end());
+  q.height_max = *std::max_element(heights.begin(), heights.end());
+  return q;
+}
+
+struct SurfaceRun {
+  TriMesh base;
+  TriMesh output;
+  SurfaceQuiltStats stats;
+  double unit = 0.0;  // base units per swatch unit
+};
+
+SurfaceRun run_surface(const TriMesh& raw_base, const TriMesh& swatch, double scale,
+                       engine::BackendChoice backend = engine::BackendChoice::cpu, int max_patches = 0,
+                       const std::vector<FieldConstraint>& constraints = {}) {
+  SurfaceRun run;
+  run.base = prepare_base(raw_base, "base");
+  const BaseSurface surface(run.base);
+  const GuidanceField field = interpolate_field(surface, constraints);
+  auto device = engine::open_device(backend);
+  SurfaceQuiltOptions options;
+  options.scale = scale;
+  options.max_patches = max_patches;
+  run.output = quilt_surface(swatch, run.base, field, *device, options, &run.stats);
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const Vec3& p : swatch.positions) {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+  }
+  run.unit = scale * surface.diagonal / std::max(hi.x - lo.x, hi.y - lo.y);
+  return run;
+}
+
+// The bar for a finished run.
+void expect_quality(const SurfaceRun& run, const TriMesh& swatch, const char* what) {
+  const double base_area = [&] {
+    double a = 0.0;
+    for (const Tri& t : run.base.triangles)
+      a += 0.5 * glm::length(glm::cross(run.base.positions[t[1]] - run.base.positions[t[0]],
+                                        run.base.positions[t[2]] - run.base.positions[t[0]]));
+    return a;
+  }();
+  const double diagonal = bbox_diagonal(run.base);
+  const SurfaceQuality q = measure(run.output, run.base, swatch_cover_radius(swatch, run.unit));
+  SCOPED_TRACE(what);
+  EXPECT_LE(run.stats.hole_area, 0.01 * base_area);
+  EXPECT_GE(q.coverage, 0.97);
+  EXPECT_GE(q.height_min, -0.01);
+  EXPECT_LE(q.height_max, run.stats.shell_height / diagonal + 0.01);
+  EXPECT_GE(q.closed, 0.95 * q.elements);
+  EXPECT_LE(q.intersecting_share, 0.01);
+  EXPECT_LE(run.stats.dropped_elements, 0.02 * (q.elements + run.stats.dropped_elements));
+  EXPECT_EQ(run.output.sources.size(), run.output.num_faces());
+}
+
+TEST(SurfaceQuilting, ChainMailCoversTheShippedSphere) {
+  const TriMesh swatch = make_chainmail(ChainmailOptions::small());
+  const SurfaceRun run = run_surface(read_mesh(kSource / "data/sphere.off"), swatch, 0.3);
+  expect_quality(run, swatch, "sphere + chain mail");
+  EXPECT_GT(run.stats.patches, 5);
+}
+
+TEST(SurfaceQuilting, HalvingTheScaleQuadruplesTheElements) {
+  const TriMesh swatch = make_chainmail(ChainmailOptions::small());
+  const TriMesh sphere = read_mesh(kSource / "data/sphere.off");
+  const SurfaceRun coarse = run_surface(sphere, swatch, 0.4);
+  const SurfaceRun fine = run_surface(sphere, swatch, 0.2);
+  int32_t coarse_elements = 0, fine_elements = 0;
+  for (int32_t e : coarse.output.elements) coarse_elements = std::max(coarse_elements, e + 1);
+  for (int32_t e : fine.output.elements) fine_elements = std::max(fine_elements, e + 1);
+  const double ratio = static_cast<double>(fine_elements) / coarse_elements;
+  EXPECT_NEAR(ratio, 4.0, 1.0) << coarse_elements << " -> " << fine_elements;
+}
+
+TEST(SurfaceQuilting, BackEndsGiveByteIdenticalOutput) {
+  const TriMesh swatch = make_chainmail(ChainmailOptions::small());
+  const TriMesh sphere = read_mesh(kSource / "data/sphere.off");
+  std::unique_ptr<engine::Device> probe;
+  try {
+    probe = engine::open_device(engine::BackendChoice::vulkan);
+  } catch (const DeviceError& e) {
+    if (std::getenv("CI")) FAIL() << "CI needs a Vulkan device: " << e.what();
+    GTEST_SKIP() << e.what();
+  }
+  probe.reset();
+  const SurfaceRun cpu = run_surface(sphere, swatch, 0.3, engine::BackendChoice::cpu, 12);
+  const SurfaceRun vulkan = run_surface(sphere, swatch, 0.3, engine::BackendChoice::vulkan, 12);
+  EXPECT_EQ(cpu.output.positions, vulkan.output.positions);
+  EXPECT_EQ(cpu.output.triangles, vulkan.output.triangles);
+  EXPECT_EQ(cpu.output.sources, vulkan.output.sources);
+}
+
+// Real bases from ../shared: a closed scan, genus 4, an open base, two components, the teapot.
+class SharedBase : public ::testing::TestWithParam<std::pair<const char*, double>> {};
+
+TEST_P(SharedBase, ChainMailMeetsTheQualityBar) {
+  const auto file = kShared / "data/meshes" / GetParam().first;
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  const TriMesh swatch = make_chainmail(ChainmailOptions::small());
+  const SurfaceRun run = run_surface(read_mesh(file), swatch, GetParam().second);
+  expect_quality(run, swatch, GetParam().first);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
+                         ::testing::Values(std::make_pair("bunny.off", 0.16), std::make_pair("fertility.off", 0.16),
+                                           std::make_pair("head.off", 0.2), std::make_pair("knot2.off", 0.2),
+                                           std::make_pair("teapot.obj", 0.2)),
+                         [](const auto& info) {
+                           std::string name = info.param.first;
+                           return name.substr(0, name.find('.'));
+                         });
+
+}  // namespace
+}  // namespace meshquilt
