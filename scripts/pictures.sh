@@ -22,3 +22,7 @@ picture() {
 picture chainmail chainmail
 picture twill weave --pattern twill:2/3
 picture fruit fruit --seed 7
+
+# The default curved job: the built-in chain mail over the shipped sphere.
+"$meshquilt" synth --base data/sphere.off --scale 0.2 --backend cpu --progress none -o "$work/sphere.ply" \
+  --preview docs/images/sphere_chainmail.png >/dev/null
