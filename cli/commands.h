@@ -10,5 +10,6 @@ void add_swatch_command(CLI::App& app);
 void add_inspect_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_render_command(CLI::App& app);
+void add_batch_command(CLI::App& app);
 
 }  // namespace meshquilt::cli

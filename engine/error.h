@@ -22,6 +22,8 @@ enum class ExitCode : int {
   solver = 9,          //!< a numerical solve failed
   interrupted = 10,    //!< stopped by SIGINT/SIGTERM or a time limit through a CancelToken
   too_large = 11,      //!< input or job larger than the memory budget (--max-memory) or the format allows
+  bad_manifest = 12,   //!< a batch manifest that cannot be read as jobs (syntax, unknown option, duplicates)
+  batch_incomplete = 13, //!< a batch or report with jobs that failed or are not done
 };
 
 //! Base of every meshquilt error; carries its exit code.
