@@ -201,7 +201,12 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   for (size_t k = 0; k < swatch.elements.size(); ++k) {
     const Rect2& b = swatch.element_bounds[k];
     if (!request.inside_domain(0.5 * (b.lo + b.hi) + t)) continue;
-    inputs.push_back(translated(swatch.elements[k], t));
+    TriMesh placed_element = translated(swatch.elements[k], t);
+    if (request.whole_inputs_only &&
+        !std::all_of(placed_element.positions.begin(), placed_element.positions.end(),
+                     [&](const Vec3& p) { return request.inside_domain(glm::dvec2(p)); }))
+      continue;
+    inputs.push_back(std::move(placed_element));
     input_source.push_back(static_cast<int32_t>(k));
   }
   outcome.inputs = static_cast<int>(inputs.size());

@@ -82,6 +82,10 @@ struct PatchRequest {
   //! Whether a point of the plane lies in the output domain: inputs whose centre lies outside
   //! are not placed, and the overlap ends there.
   std::function<bool(const glm::dvec2&)> inside_domain;
+  //! Place only inputs whose every vertex lies inside the domain (a surface patch is a window on
+  //! the surface: geometry past its edge has no place to go). Planar quilting lets elements whose
+  //! centre is inside hang over the rectangle's edge.
+  bool whole_inputs_only = false;
 };
 
 //! Counters of what the merging did, summed over patches.

@@ -235,6 +235,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
       request.grid.ny = std::max(1, static_cast<int>(std::ceil((hi.y - lo.y) / cell)));
     }
     request.inside_domain = [&patch](const glm::dvec2& p) { return patch.locate(p).has_value(); };
+    request.whole_inputs_only = true;
 
     const size_t existing = layer.size();
     const PatchOutcome outcome =
