@@ -24,9 +24,7 @@ struct TestJob {
 };
 
 // ---- The jobs every batch test runs. ------------------------------------------------------
-// A curved-surface job is one more entry once synth has --base, for example
-//   {"out/curved.ply", R"(["--swatch", "chain.ply", "--base", "bump.off", "--seed", 3])"},
-// with its base mesh written in BatchTest::SetUpTestSuite. --max-patches keeps each job to a
+// Curved-surface jobs cover the shipped sphere (copied beside the manifest). --max-patches keeps each job to a
 // fraction of a second (a full 1x1 plane takes 10-25 s on the shared 2-core machine); job 2 is
 // the largest, so the kill test stops the batch while it runs.
 const TestJob kJobs[] = {
@@ -38,6 +36,8 @@ const TestJob kJobs[] = {
     {"out/chain6.off", R"({"swatch": "chain.ply", "plane": "1x1.5", "seed": 6, "backend": "cpu", "max-patches": 3})"},
     {"out/twill7.stl", R"(["--swatch", "twill.ply", "--plane", "1.5x1", "--seed", 7, "--backend", "cpu", "--cells", 12, "--max-patches", 3])"},
     {"out/chain8.ply", R"(["--swatch", "chain.ply", "--plane", "1x1", "--seed", 8, "--backend", "cpu", "--no-cleanup", "--max-patches", 3])"},
+    {"out/sphere9.ply", R"(["--swatch", "chain.ply", "--base", "sphere.off", "--scale", 0.3, "--seed", 9, "--backend", "cpu", "--max-patches", 3])"},
+    {"out/sphere10.ply", R"({"swatch": "twill.ply", "base": "sphere.off", "scale": 0.4, "seed": 10, "backend": "cpu", "max-patches": 2})"},
 };
 // ---------------------------------------------------------------------------------------------
 constexpr size_t kJobCount = sizeof(kJobs) / sizeof(kJobs[0]);
@@ -123,6 +123,8 @@ class BatchTest : public ::testing::Test {
     source_ = scratch_dir("batch_source_" + std::to_string(getpid()));  // one per test process
     ASSERT_EQ(run_cli("swatch chainmail --preset small -o " + quote(source_ / "chain.ply")).exit_code, 0);
     ASSERT_EQ(run_cli("swatch weave --pattern twill:2/3 --preset small -o " + quote(source_ / "twill.ply")).exit_code, 0);
+    fs::copy_file(fs::path(MESHQUILT_SOURCE_DIR) / "data/sphere.off", source_ / "sphere.off",
+                  fs::copy_options::overwrite_existing);
     fs::create_directories(source_ / "direct" / "out");
     for (const TestJob& job : kJobs) {
       std::string args = direct_arguments(job);
@@ -141,6 +143,7 @@ class BatchTest : public ::testing::Test {
     const fs::path dir = scratch_dir(name);
     fs::copy_file(source_ / "chain.ply", dir / "chain.ply");
     fs::copy_file(source_ / "twill.ply", dir / "twill.ply");
+    fs::copy_file(fs::path(MESHQUILT_SOURCE_DIR) / "data/sphere.off", dir / "sphere.off");
     write_file(dir / "jobs.jsonl", manifest_text());
     return dir;
   }
@@ -168,7 +171,7 @@ TEST_F(BatchTest, ThreeShardsMatchDirectSynth) {
     const ChildEnd end = wait_child(shards[i]);
     const std::string log = read_file(dir / ("shard" + std::to_string(i) + ".log"));
     EXPECT_EQ(end.exit_code, 0) << log;
-    EXPECT_EQ(count_of(log, "\"event\":\"job_end\""), i < 2 ? 3u : 2u) << log;  // jobs i, i+3, i+6
+    EXPECT_EQ(count_of(log, "\"event\":\"job_end\""), (kJobCount - i + 2) / 3) << log;  // jobs i, i+3, ...
     EXPECT_NE(log.find("\"shard\":\"" + std::to_string(i) + "/3\""), std::string::npos) << log;
   }
   std::printf("3 shards, %zu jobs: %.1f s\n", kJobCount, std::chrono::duration<double>(Clock::now() - start).count());
@@ -179,7 +182,8 @@ TEST_F(BatchTest, ThreeShardsMatchDirectSynth) {
   EXPECT_EQ(count_of(report.output, ",done,"), kJobCount) << report.output;
   const CliResult table = run_cli("batch " + quote(dir / "jobs.jsonl") + " --report");
   EXPECT_EQ(table.exit_code, 0) << table.output;
-  EXPECT_NE(table.output.find("8 done, 0 failed, 0 running, 0 missing"), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find(std::to_string(kJobCount) + " done, 0 failed, 0 running, 0 missing"), std::string::npos)
+      << table.output;
 
   // A rerun finds every record matching and runs nothing.
   const CliResult again = run_cli("batch " + quote(dir / "jobs.jsonl") + " --progress json");
@@ -255,7 +259,7 @@ TEST_F(BatchTest, SigkillMidJobThenRerunRedoesOnlyUnfinishedJobs) {
 
   const CliResult report = run_cli("batch " + quote(dir / "jobs.jsonl") + " --report --format json");
   EXPECT_EQ(report.exit_code, 0) << report.output;
-  EXPECT_NE(report.output.find("\"done\": 8"), std::string::npos) << report.output;
+  EXPECT_NE(report.output.find("\"done\": " + std::to_string(kJobCount)), std::string::npos) << report.output;
 }
 
 TEST(BatchManifest, MissingManifestIsOneLine) {
