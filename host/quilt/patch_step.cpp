@@ -254,6 +254,17 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
         near.push_back(&layer[k].mesh);
     return near;
   };
+  // The collision policy, in the space the output will live in.
+  const auto collides = [&](const TriMesh& mesh, int32_t self) {
+    const std::vector<const TriMesh*> near = neighbours(mesh, self);
+    if (!request.to_space || near.empty()) return passes_through(mesh, near);
+    std::vector<TriMesh> placed_near;
+    placed_near.reserve(near.size());
+    for (const TriMesh* m : near) placed_near.push_back(request.to_space(*m));
+    std::vector<const TriMesh*> pointers;
+    for (const TriMesh& m : placed_near) pointers.push_back(&m);
+    return passes_through(request.to_space(mesh), pointers);
+  };
   // A deformation that pushes an output element into a neighbour is undone: the element keeps
   // its shape and the merge works from there.
   // Shapes before the deformation: a partner that is not merged after all gets its shape back,
@@ -264,7 +275,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     PlaneElement& e = layer[affected[o]];
     if (outs[o].positions == e.mesh.positions) continue;
     undeformed[o] = e.mesh.positions;
-    if (passes_through(outs[o], neighbours(outs[o], affected[o]))) {
+    if (collides(outs[o], affected[o])) {
       ++counts.undone_deformations;
       continue;
     }
@@ -295,7 +306,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     }
     // A merged element that would pass through a neighbour (a seam where two patches'
     // registrations disagree) is refused: the output element stays as it was.
-    if (passes_through(replacement, neighbours(replacement, affected[partner->out_element]))) {
+    if (collides(replacement, affected[partner->out_element])) {
       ++counts.refused_merges;
       restore_shape();
       continue;
@@ -317,7 +328,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     bool all_overlap = true;
     for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && in_overlap(p);
     const Rect2 b = xy_bounds(inputs[i]);
-    if (all_overlap || passes_through(inputs[i], neighbours(inputs[i], -1))) {
+    if (all_overlap || collides(inputs[i], -1)) {
       ++counts.rejected_inputs;
       continue;
     }

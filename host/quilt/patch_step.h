@@ -86,6 +86,10 @@ struct PatchRequest {
   //! the surface: geometry past its edge has no place to go). Planar quilting lets elements whose
   //! centre is inside hang over the rectangle's edge.
   bool whole_inputs_only = false;
+  //! Where plane geometry ends up (a surface patch: embedded over the base); the collision
+  //! policy tests there, since bending a layer over a curved base can make elements that are
+  //! apart in the plane meet. Empty: the plane is the space.
+  std::function<TriMesh(const TriMesh&)> to_space;
 };
 
 //! Counters of what the merging did, summed over patches.

@@ -236,6 +236,17 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
     }
     request.inside_domain = [&patch](const glm::dvec2& p) { return patch.locate(p).has_value(); };
     request.whole_inputs_only = true;
+    request.to_space = [&](const TriMesh& plane_mesh) {
+      TriMesh placed;
+      placed.triangles = plane_mesh.triangles;
+      placed.positions.reserve(plane_mesh.positions.size());
+      for (const Vec3& p : plane_mesh.positions) {
+        const std::optional<SurfacePoint> at = patch.locate(glm::dvec2(p));
+        const SurfacePoint point = at ? *at : patch.nearest(glm::dvec2(p));
+        placed.positions.push_back(base.position(point) + p.z * height_unit * base.normal(point));
+      }
+      return placed;
+    };
 
     const size_t existing = layer.size();
     const PatchOutcome outcome =
