@@ -31,10 +31,30 @@ BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& element
   const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
   std::map<std::pair<int32_t, int32_t>, int> element_pairs;
   for (const auto& [a, b] : pairs) ++element_pairs[std::minmax(joined.elements[a], joined.elements[b])];
+  // Fewest drops: repeatedly remove the element that passes through the most live others (ties:
+  // fewer faces, then the later one), so one bad element does not take its neighbours with it.
+  std::vector<std::vector<size_t>> partners(elements.size());
   for (const auto& [pair, count] : element_pairs) {
-    const size_t a = part_of[pair.first], b = part_of[pair.second];
-    if (!alive[a] || !alive[b]) continue;
-    alive[elements[a]->num_faces() < elements[b]->num_faces() ? a : b] = 0;
+    partners[part_of[pair.first]].push_back(part_of[pair.second]);
+    partners[part_of[pair.second]].push_back(part_of[pair.first]);
+  }
+  while (true) {
+    size_t worst = elements.size();
+    size_t worst_count = 0;
+    for (size_t i = 0; i < elements.size(); ++i) {
+      if (!alive[i]) continue;
+      size_t count = 0;
+      for (size_t j : partners[i]) count += alive[j];
+      if (count == 0) continue;
+      const bool better = count > worst_count ||
+                          (count == worst_count && elements[i]->num_faces() <= elements[worst]->num_faces());
+      if (better) {
+        worst = i;
+        worst_count = count;
+      }
+    }
+    if (worst == elements.size()) break;
+    alive[worst] = 0;
     ++removed.intersecting;
   }
   return removed;

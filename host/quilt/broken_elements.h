@@ -10,12 +10,13 @@ namespace meshquilt {
 
 struct BrokenElements {
   int open = 0;          //!< not closed 2-manifolds although the swatch's elements are
-  int intersecting = 0;  //!< the smaller of two elements that pass through each other
+  int intersecting = 0;  //!< removed because they passed through others
 };
 
 //! Marks broken elements dead in `alive` (#elements): when `swatch_closed`, every element that
-//! is not a closed 2-manifold; then, of two alive elements whose faces intersect (exact tests),
-//! the one with fewer faces (the second on a tie), pairs taken in ascending order.
+//! is not a closed 2-manifold; then, while alive elements intersect (exact tests), the one that
+//! intersects the most alive others (ties: fewer faces, then the later one), so that as few
+//! elements go as possible.
 BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
                                       std::vector<uint8_t>& alive);
 

@@ -90,6 +90,9 @@ struct PatchRequest {
   //! policy tests there, since bending a layer over a curved base can make elements that are
   //! apart in the plane meet. Empty: the plane is the space.
   std::function<TriMesh(const TriMesh&)> to_space;
+  //! Geometry already in that space that the step cannot change (the parts of output elements
+  //! outside a surface patch); new and merged elements must not pass through it either.
+  std::vector<TriMesh> obstacles;
 };
 
 //! Counters of what the merging did, summed over patches.

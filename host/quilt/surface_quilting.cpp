@@ -161,6 +161,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
     // The layer: parts of the elements that reach into the patch, in its plane.
     std::vector<PlaneElement> layer;
     std::vector<ElementPart> parts;
+    std::vector<TriMesh> obstacles;
     {
       StageTimer timer(seconds, "layer");
       const Vec3 centre = base.position(seed);
@@ -200,6 +201,20 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
           }
           plane.mesh.triangles.push_back(local);
         }
+        // The rest of the element stays where it is: an obstacle in space for this patch.
+        if (std::find(part.face_in_part.begin(), part.face_in_part.end(), 0) != part.face_in_part.end()) {
+          TriMesh rest;
+          for (size_t f = 0; f < element.triangles.size(); ++f) {
+            if (part.face_in_part[f]) continue;
+            const int32_t first = static_cast<int32_t>(rest.positions.size());
+            for (int32_t v : element.triangles[f]) {
+              const LocalVertex& lv = element.vertices[v];
+              rest.positions.push_back(base.position(lv.point) + lv.height * base.normal(lv.point));
+            }
+            rest.triangles.push_back({first, first + 1, first + 2});
+          }
+          obstacles.push_back(std::move(rest));
+        }
         if (plane.mesh.triangles.empty()) continue;
         plane.pinned.assign(plane.mesh.positions.size(), 0);
         bool any_pinned = false;
@@ -236,6 +251,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
     }
     request.inside_domain = [&patch](const glm::dvec2& p) { return patch.locate(p).has_value(); };
     request.whole_inputs_only = true;
+    request.obstacles = std::move(obstacles);
     request.to_space = [&](const TriMesh& plane_mesh) {
       TriMesh placed;
       placed.triangles = plane_mesh.triangles;
