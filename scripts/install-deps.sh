@@ -9,6 +9,7 @@ packages=(
   libtet1.5-dev libboost-graph-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3
+  clang-14 libclang-rt-14-dev
   slurm-wlm munge
 )
 missing=()

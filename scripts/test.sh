@@ -4,3 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 900
+# Then the same tests (less the labels end_to_end, slow) under ASan+UBSan, fuzz corpora included,
+# and 10 s of each libFuzzer target: a memory error, leak or undefined behaviour fails the run.
+bash scripts/sanitize.sh
+bash scripts/fuzz.sh 10
