@@ -65,6 +65,49 @@ TEST_F(SynthBadInput, BadBackend) { expect_failure("--backend cuda", 6, "--backe
 
 TEST_F(SynthBadInput, UnknownOption) { expect_failure("--frobnicate 3", 2, "frobnicate"); }
 
+// Curved surfaces: bad bases and bad field files.
+const char* kBaseTetrahedron = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+
+TEST_F(SynthBadInput, NonManifoldBase) {
+  // Three triangles on the edge (0, 1).
+  const auto base = swatch("fan.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  expect_failure("--base " + base.string(), 5, "fan.off: non-manifold base");
+}
+
+TEST_F(SynthBadInput, EmptyBase) {
+  expect_failure("--base " + swatch("empty.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string(), 5, "empty.off");
+}
+
+TEST_F(SynthBadInput, BaseWithNaN) {
+  expect_failure("--base " + swatch("nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n").string(), 5,
+                 "nan.off");
+}
+
+TEST_F(SynthBadInput, MissingBase) { expect_failure("--base " + (dir_ / "nope.off").string(), 3, "nope.off"); }
+
+TEST_F(SynthBadInput, MalformedField) {
+  const auto base = swatch("tet.off", kBaseTetrahedron);
+  expect_failure("--base " + base.string() + " --field " + swatch("f.json", "{\"directions\": [").string(), 6,
+                 "f.json: not valid JSON");
+}
+
+TEST_F(SynthBadInput, FieldNamesAMissingVertex) {
+  const auto base = swatch("tet.off", kBaseTetrahedron);
+  const auto field = swatch("f.json", R"({"directions": [{"vertex": 99, "direction": [1, 0, 0]}]})");
+  expect_failure("--base " + base.string() + " --field " + field.string(), 6, "vertex 99 does not exist");
+}
+
+TEST_F(SynthBadInput, MissingField) {
+  const auto base = swatch("tet.off", kBaseTetrahedron);
+  expect_failure("--base " + base.string() + " --field " + (dir_ / "nope.json").string(), 3, "nope.json");
+}
+
+TEST_F(SynthBadInput, FieldWithoutBase) { expect_failure("--field f.json", 6, "--base"); }
+
+TEST_F(SynthBadInput, BadScale) {
+  expect_failure("--base " + swatch("tet.off", kBaseTetrahedron).string() + " --scale 0", 6, "--scale");
+}
+
 TEST(SynthBadOutput, UnknownOutputFormat) {
   const auto dir = scratch_dir("unknown_output");
   const CliResult r = run_cli("synth --progress none -o '" + (dir / "out.xyz").string() + "'");
