@@ -35,6 +35,9 @@ struct Common {
 template <class Options>
 class Binder {
  public:
+  //! shown: the values the help prints as defaults (the preset's own, not the struct's).
+  explicit Binder(const Options& shown = Options{}) : given_(shown) {}
+
   template <class T>
   void add(CLI::App* cmd, const std::string& flag, T Options::*field, const std::string& help) {
     CLI::Option* option = cmd->add_option(flag, given_.*field, help)->capture_default_str();
@@ -93,6 +96,19 @@ void add_chainmail(CLI::App* parent, const std::shared_ptr<Common>& common) {
   });
 }
 
+// `--only warps|wefts`: one yarn direction; unset, both.
+std::shared_ptr<std::string> add_only(CLI::App* cmd) {
+  auto only = std::make_shared<std::string>("both");
+  cmd->add_option("--only", *only, "build one direction alone: warps (along y) or wefts (along x)")
+      ->check(CLI::IsMember({"both", "warps", "wefts"}))
+      ->capture_default_str();
+  return only;
+}
+
+WeaveYarns yarns_named(const std::string& name) {
+  return name == "warps" ? WeaveYarns::warps : name == "wefts" ? WeaveYarns::wefts : WeaveYarns::both;
+}
+
 void add_weave(CLI::App* parent, const std::shared_ptr<Common>& common) {
   auto* cmd = parent->add_subcommand("weave", "woven yarns: warps along y and wefts along x, over and under by a weave pattern");
   add_common(cmd, *common, false);
@@ -107,9 +123,34 @@ void add_weave(CLI::App* parent, const std::shared_ptr<Common>& common) {
   b->add(cmd, "--amplitude", &WeaveOptions::amplitude, "height of a yarn above or below z = 0 at a crossing");
   b->add(cmd, "--segments", &WeaveOptions::segments_per_pitch, "segments per pitch along a yarn");
   b->add(cmd, "--sides", &WeaveOptions::sides, "vertices around a yarn");
-  cmd->callback([common, b, pattern] {
+  auto only = add_only(cmd);
+  cmd->callback([common, b, pattern, only] {
     WeaveOptions options = b->resolve(common->preset == "small" ? WeaveOptions::small() : WeaveOptions{});
     options.pattern = parse_weave_pattern(*pattern);
+    options.yarns = yarns_named(*only);
+    write(make_weave(options), *common);
+  });
+}
+
+void add_wire(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand("wire", "a sparse square mesh of thin crimped wires: a plain weave, any wire count");
+  add_common(cmd, *common, false);
+  auto wires = std::make_shared<int>(0);
+  cmd->add_option("--wires", *wires, "wires each way (default 9; small preset 5)")->check(CLI::PositiveNumber);
+  auto b = std::make_shared<Binder<WeaveOptions>>(WeaveOptions::wire());
+  b->add(cmd, "--warps", &WeaveOptions::warps, "wires along y (overrides --wires)");
+  b->add(cmd, "--wefts", &WeaveOptions::wefts, "wires along x (overrides --wires)");
+  b->add(cmd, "--radius", &WeaveOptions::yarn_radius, "wire radius");
+  b->add(cmd, "--pitch", &WeaveOptions::pitch, "distance between neighbouring parallel wires");
+  b->add(cmd, "--crimp", &WeaveOptions::amplitude, "height of a wire above or below z = 0 at a crossing");
+  b->add(cmd, "--segments", &WeaveOptions::segments_per_pitch, "segments per pitch along a wire");
+  b->add(cmd, "--sides", &WeaveOptions::sides, "vertices around a wire");
+  auto only = add_only(cmd);
+  cmd->callback([common, wires, b, only] {
+    WeaveOptions preset = common->preset == "small" ? WeaveOptions::small_wire() : WeaveOptions::wire();
+    if (*wires != 0) preset.warps = preset.wefts = *wires;
+    WeaveOptions options = b->resolve(preset);
+    options.yarns = yarns_named(*only);
     write(make_weave(options), *common);
   });
 }
@@ -176,11 +217,12 @@ void add_heightfield(CLI::App* parent, const std::shared_ptr<Common>& common) {
 }  // namespace
 
 void add_swatch_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("swatch", "writes a built-in swatch: chainmail, weave, fruit, nuts or heightfield");
+  auto* cmd = app.add_subcommand("swatch", "writes a built-in swatch: chainmail, weave, wire, fruit, nuts or heightfield");
   cmd->require_subcommand(1);
   auto common = std::make_shared<Common>();
   add_chainmail(cmd, common);
   add_weave(cmd, common);
+  add_wire(cmd, common);
   add_fruit(cmd, common);
   add_nuts(cmd, common);
   add_heightfield(cmd, common);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -461,7 +462,7 @@ double element_height_at(const TriMesh& m, int32_t element, double x, double y) 
 
 // Reads the pattern back from the geometry: at each crossing centre, which yarn is higher.
 void check_weave_pattern(const TriMesh& m, const WeaveOptions& o, int warps, int wefts,
-                         const std::function<bool(int, int)>& expected_warp_over) {
+                         const std::function<bool(int, int)>& expected_warp_over, bool periodic = true) {
   const Box all = bounds(m);
   for (int i = 0; i < warps; ++i) {
     // Every warp spans the swatch along y, staying in its own column.
@@ -487,7 +488,7 @@ void check_weave_pattern(const TriMesh& m, const WeaveOptions& o, int warps, int
   // Periodic: shifted by the period, each yarn's end section lands exactly on its start section
   // (its cap ring and cap centre), so tiled copies continue every yarn seamlessly.
   const double L_x = warps * o.pitch, L_y = wefts * o.pitch;
-  for (int e = 0; e < warps + wefts; ++e) {
+  for (int e = 0; periodic && e < warps + wefts; ++e) {
     const Vec3 shift = e < warps ? Vec3(0, L_y, 0) : Vec3(L_x, 0, 0);
     std::vector<Vec3> verts;
     for (size_t f = 0; f < m.triangles.size(); ++f)
@@ -611,6 +612,117 @@ TEST(Weave, RejectsBadCountsAndTouchingYarns) {
   EXPECT_EQ(with([](WeaveOptions& o) { o.amplitude = 1.5; }), ExitCode::invalid_option);   // yarn folds
   EXPECT_EQ(with([](WeaveOptions& o) { o.sides = 2; }), ExitCode::invalid_option);
   EXPECT_EQ(with([](WeaveOptions&) {}), ExitCode::ok);
+}
+
+// Sparse crimped wire.
+
+// Bounding box of one element's vertices.
+Box element_bounds(const TriMesh& m, int32_t element) {
+  Box b;
+  for (size_t f = 0; f < m.triangles.size(); ++f)
+    if (m.elements[f] == element)
+      for (int32_t v : m.triangles[f]) b.add(m.positions[v]);
+  return b;
+}
+
+// Each wire: centred on its own line at (n + 1/2) pitch, one radius to either side of it,
+// the swatch's full length along it, and crimped: its z span is 2 (crimp + radius) within the
+// facets' sag.
+void check_wires(const TriMesh& m, const WeaveOptions& o, int first_element, int count, bool warp, int length) {
+  for (int n = 0; n < count; ++n) {
+    SCOPED_TRACE((warp ? "warp " : "weft ") + std::to_string(n));
+    const Box b = element_bounds(m, first_element + n);
+    const double across_lo = warp ? b.lo.x : b.lo.y, across_hi = warp ? b.hi.x : b.hi.y;
+    const double along_lo = warp ? b.lo.y : b.lo.x, along_hi = warp ? b.hi.y : b.hi.x;
+    // Section vertices sit at angles 2 pi k / sides from the across direction.
+    double lowest_cos = 1.0;
+    for (int k = 0; k < o.sides; ++k) lowest_cos = std::min(lowest_cos, std::cos(2.0 * std::numbers::pi * k / o.sides));
+    EXPECT_NEAR(across_hi, (n + 0.5) * o.pitch + o.yarn_radius, 1e-9);
+    EXPECT_NEAR(across_lo, (n + 0.5) * o.pitch + lowest_cos * o.yarn_radius, 1e-9);
+    // Caps lean out by less than a radius past the swatch's borders.
+    EXPECT_NEAR(along_lo, 0.0, o.yarn_radius);
+    EXPECT_NEAR(along_hi, length * o.pitch, o.yarn_radius);
+    EXPECT_GT(b.extent().z, 2.0 * (o.amplitude + o.yarn_radius) * 0.95);
+    EXPECT_LE(b.extent().z, 2.0 * (o.amplitude + o.yarn_radius) + 1e-9);
+  }
+}
+
+TEST(Wire, DefaultIsNineByNineSparseCrimpedPlainWeave) {
+  const WeaveOptions o = WeaveOptions::wire();
+  const TriMesh m = make_weave(o);
+  EXPECT_EQ(m.num_faces(), 21024u);
+  check_swatch(m, {18, true, 2}, "wire_default");  // closed tubes, no two touching (brute force)
+  check_weave_pattern(m, o, 9, 9, [](int i, int j) { return mod(i - j, 2) == 0; }, false);
+  check_round_trip(m, "wire_default");
+  // Thin wires several diameters apart: the gap between parallel wires is at least 5 diameters.
+  EXPECT_GE(o.pitch - 2.0 * o.yarn_radius, 5.0 * 2.0 * o.yarn_radius);
+  check_wires(m, o, 0, 9, true, 9);
+  check_wires(m, o, 9, 9, false, 9);
+}
+
+TEST(Wire, SmallPresetAndChosenSpacing) {
+  const WeaveOptions small = WeaveOptions::small_wire();
+  const TriMesh m = make_weave(small);
+  EXPECT_LE(m.num_faces(), 2100u);
+  check_swatch(m, {10, true, 2}, "wire_small");
+  check_wires(m, small, 0, 5, true, 5);
+  check_wires(m, small, 5, 5, false, 5);
+
+  // Radius and pitch are independent: a wider spacing and a thinner wire, 7 x 4 wires.
+  WeaveOptions o = small;
+  o.pitch = 2.5;
+  o.yarn_radius = 0.05;
+  o.amplitude = 0.2;
+  o.warps = 7;
+  o.wefts = 4;
+  const TriMesh wide = make_weave(o);
+  check_swatch(wide, {11, true, 2}, "wire_wide");
+  check_weave_pattern(wide, o, 7, 4, [](int i, int j) { return mod(i - j, 2) == 0; }, false);
+  check_wires(wide, o, 0, 7, true, 4);
+  check_wires(wide, o, 7, 4, false, 7);
+}
+
+TEST(Wire, OneDirectionBuildsOnlyThoseWires) {
+  for (const WeaveYarns yarns : {WeaveYarns::warps, WeaveYarns::wefts}) {
+    const bool warp = yarns == WeaveYarns::warps;
+    SCOPED_TRACE(warp ? "warps" : "wefts");
+    WeaveOptions o = WeaveOptions::small_wire();
+    o.warps = 5;
+    o.wefts = 3;
+    o.yarns = yarns;
+    const TriMesh m = make_weave(o);
+    const int count = warp ? 5 : 3;
+    check_swatch(m, {count, true, 2}, warp ? "wire_warps" : "wire_wefts");
+    // Every element runs in the one direction, across the other direction's full length.
+    check_wires(m, o, 0, count, warp, warp ? 3 : 5);
+    // Exactly the faces of those wires in the two-direction swatch, in the same order.
+    WeaveOptions both = o;
+    both.yarns = WeaveYarns::both;
+    const TriMesh full = make_weave(both);
+    const int32_t first = warp ? 0 : 5;
+    std::vector<Vec3> expected, got;
+    for (size_t f = 0; f < full.triangles.size(); ++f)
+      if (full.elements[f] >= first && full.elements[f] < first + count)
+        for (int32_t v : full.triangles[f]) expected.push_back(full.positions[v]);
+    for (const Tri& t : m.triangles)
+      for (int32_t v : t) got.push_back(m.positions[v]);
+    EXPECT_EQ(got, expected);
+  }
+  // Without crossings the crimp need not clear the other direction: an amplitude the two-way
+  // swatch refuses is accepted for one direction.
+  WeaveOptions flat = WeaveOptions::small_wire();
+  flat.amplitude = 0.05;
+  EXPECT_EQ(error_code([&] { make_weave(flat); }), ExitCode::invalid_option);
+  flat.yarns = WeaveYarns::wefts;
+  EXPECT_EQ(error_code([&] { make_weave(flat); }), ExitCode::ok);
+}
+
+TEST(Wire, AnyCountOnlyWithoutWholeRepeats) {
+  WeaveOptions o = WeaveOptions::small();  // whole repeats required, as before
+  o.warps = 5;
+  EXPECT_EQ(error_code([&] { make_weave(o); }), ExitCode::invalid_option);
+  o.whole_repeats = false;
+  EXPECT_EQ(error_code([&] { make_weave(o); }), ExitCode::ok);
 }
 
 // The size checks are sound: swatches at the edge of what they accept still do not intersect.

@@ -73,10 +73,10 @@ void validate(const WeaveOptions& o, int warps, int wefts) {
   if (p.warps < 1 || p.wefts < 1 || p.warp_over.size() != static_cast<size_t>(p.warps) * p.wefts) {
     invalid("empty or malformed pattern");
   }
-  if (warps < 1 || warps % p.warps != 0) {
+  if (warps < 1 || (o.whole_repeats && warps % p.warps != 0)) {
     invalid("--warps " + std::to_string(warps) + " is not a positive multiple of the pattern's " + std::to_string(p.warps) + " ends");
   }
-  if (wefts < 1 || wefts % p.wefts != 0) {
+  if (wefts < 1 || (o.whole_repeats && wefts % p.wefts != 0)) {
     invalid("--wefts " + std::to_string(wefts) + " is not a positive multiple of the pattern's " + std::to_string(p.wefts) + " picks");
   }
   if (warps > 4096 || wefts > 4096) invalid("more than 4096 yarns in a direction");
@@ -105,7 +105,10 @@ void validate(const WeaveOptions& o, int warps, int wefts) {
     m << "--pitch " << o.pitch << " must exceed the yarn diameter " << needed << " so that parallel yarns do not touch";
     invalid(m.str());
   }
-  // Signs at crossings k-2..k+2 (bit k+2 set: on top) of the warp and of the weft.
+  // A single direction has no crossings; its crimp is only a shape.
+  if (o.yarns != WeaveYarns::both) return;
+  // Signs at crossings k-2..k+2 (bit k+2 set: on top) of the warp and of the weft. The pattern
+  // wraps, so a count that is not a whole repeat meets no configuration missing here.
   std::map<std::pair<int, int>, double> measured;
   for (int j = 0; j < p.wefts; ++j) {
     for (int i = 0; i < p.warps; ++i) {
@@ -135,6 +138,26 @@ WeaveOptions WeaveOptions::small() {
   o.yarns_hint = 4;
   o.segments_per_pitch = 4;
   o.sides = 6;
+  return o;
+}
+
+WeaveOptions WeaveOptions::wire() {
+  WeaveOptions o;
+  o.warps = o.wefts = 9;
+  o.pitch = 1.0;
+  o.yarn_radius = 0.08;
+  o.amplitude = 0.12;
+  o.segments_per_pitch = 8;
+  o.sides = 8;
+  o.whole_repeats = false;  // nine is odd; the plain repeat is two
+  return o;
+}
+
+WeaveOptions WeaveOptions::small_wire() {
+  WeaveOptions o = wire();
+  o.warps = o.wefts = 5;
+  o.segments_per_pitch = 4;
+  o.sides = 5;
   return o;
 }
 
@@ -173,11 +196,12 @@ TriMesh make_weave(const WeaveOptions& o) {
       }
       // Exact tangents make the end sections periodic: the cap at one border is the cap at the
       // other shifted by the period, so tiled copies continue each yarn without a kink.
-      append_tube(mesh, centre, normal, o.yarn_radius, o.sides, TubeEnds::capped, warp ? n : warps + n, tangent);
+      const int32_t element = warp || o.yarns == WeaveYarns::wefts ? n : warps + n;
+      append_tube(mesh, centre, normal, o.yarn_radius, o.sides, TubeEnds::capped, element, tangent);
     }
   };
-  sweep(warps, wefts, true);
-  sweep(wefts, warps, false);
+  if (o.yarns != WeaveYarns::wefts) sweep(warps, wefts, true);
+  if (o.yarns != WeaveYarns::warps) sweep(wefts, warps, false);
   return mesh;
 }
 
