@@ -22,6 +22,7 @@ picture() {
 picture chainmail chainmail
 picture twill weave --pattern twill:2/3
 picture fruit fruit --seed 7
+picture wire wire
 
 # The default curved job: the built-in chain mail over the shipped sphere.
 "$meshquilt" synth --base data/sphere.off --scale 0.2 --backend cpu --progress none -o "$work/sphere.ply" \
