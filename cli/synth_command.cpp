@@ -178,7 +178,20 @@ void run_synth(const SynthArgs& args) {
   const auto write_start = Clock::now();
   check_interrupted();
   write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
-  if (!args.preview.empty()) write_preview(result, args.preview, preview_options);
+  if (!args.preview.empty()) {
+    if (curved) {
+      // The base under its texture, in plain grey: an element id after the output's.
+      TriMesh shown = join_elements({result, base});
+      int32_t base_id = 0;
+      for (int32_t e : result.elements) base_id = std::max(base_id, e + 1);
+      for (size_t f = result.num_faces(); f < shown.num_faces(); ++f) shown.elements[f] = base_id;
+      for (size_t f = 0; f < result.num_faces(); ++f) shown.elements[f] = result.elements[f];
+      preview_options.plain_element = base_id;
+      write_preview(shown, args.preview, preview_options);
+    } else {
+      write_preview(result, args.preview, preview_options);
+    }
+  }
   summary["stages"]["write"] = std::chrono::duration<double>(Clock::now() - write_start).count();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 

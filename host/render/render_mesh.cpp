@@ -49,10 +49,14 @@ std::vector<Vec3> face_normals(const TriMesh& mesh) {
 }
 
 // Base colour of each face for the mode.
-std::vector<Vec3> face_colors(const TriMesh& mesh, RenderMode mode) {
+std::vector<Vec3> face_colors(const TriMesh& mesh, RenderMode mode, int32_t plain_element) {
   const std::vector<int32_t> ids = face_element_ids(mesh);
   std::vector<Vec3> colors(mesh.num_faces());
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (plain_element >= 0 && ids[f] == plain_element) {
+      colors[f] = Vec3(0.72);
+      continue;
+    }
     const Vec3 element = element_color(ids[f]);
     colors[f] = mode == RenderMode::elements ? element : glm::mix(kNeutral, element, kShadedTint);
   }
@@ -97,7 +101,7 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
       frame_box(lo, hi, options.view, options.width, options.height, options.margin);
   const Lights lights = lights_for(camera);
   const std::vector<Vec3> normals = face_normals(mesh);
-  const std::vector<Vec3> colors = face_colors(mesh, options.mode);
+  const std::vector<Vec3> colors = face_colors(mesh, options.mode, options.plain_element);
   const FaceBvh bvh(mesh);
   const Vec3 background(options.background[0] / 255.0, options.background[1] / 255.0,
                         options.background[2] / 255.0);

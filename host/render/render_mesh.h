@@ -27,6 +27,9 @@ struct RenderOptions {
                                    //!< edges; 1: one ray through each pixel centre), 1..4
   double margin = 0.05;            //!< empty share of the width (height) left at each side
   Rgb8 background{244, 245, 247};  //!< colour where no face is hit (lighter than any hit)
+  //! Faces of this element id are drawn in a plain light grey in every mode (a base mesh shown
+  //! under its texture); -1: none.
+  int32_t plain_element = -1;
 };
 
 //! \throw InputError(invalid_option) naming `--size WxH` when a side is outside
