@@ -27,3 +27,14 @@ picture wire wire
 # The default curved job: the built-in chain mail over the shipped sphere.
 "$meshquilt" synth --base data/sphere.off --scale 0.2 --backend cpu --progress none -o "$work/sphere.ply" \
   --preview docs/images/sphere_chainmail.png >/dev/null
+
+# Curved, from ../shared when it is there: the bunny in chain mail and in a weave along a field.
+bunny=../shared/data/meshes/bunny.off
+if [ -f "$bunny" ]; then
+  "$meshquilt" swatch chainmail --preset small -o "$work/chain.ply" >/dev/null
+  "$meshquilt" swatch weave --preset small -o "$work/weave.ply" >/dev/null
+  "$meshquilt" synth --swatch "$work/chain.ply" --base "$bunny" --scale 0.16 --backend cpu --progress none \
+    -o "$work/bunny_chain.ply" --preview docs/images/bunny_chainmail.png >/dev/null
+  "$meshquilt" synth --swatch "$work/weave.ply" --base "$bunny" --scale 0.16 --field data/bunny_field.json \
+    --backend cpu --progress none -o "$work/bunny_weave.ply" --preview docs/images/bunny_weave_field.png >/dev/null
+fi
