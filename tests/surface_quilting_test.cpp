@@ -217,6 +217,28 @@ TEST(SurfaceQuilting, BackEndsGiveByteIdenticalOutput) {
   EXPECT_EQ(cpu.output.sources, vulkan.output.sources);
 }
 
+// A flat square whose triangles shrink geometrically from one side to the other: the widest are
+// about 600 times wider than the narrowest (split into cells), the narrowest far below a cell.
+TEST(SurfaceQuilting, StronglyNonUniformTriangles) {
+  TriMesh base;
+  const int columns = 14, rows = 4;
+  const double ratio = 1.6;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= columns; ++i)
+      base.positions.emplace_back((std::pow(ratio, i) - 1.0) / (std::pow(ratio, columns) - 1.0),
+                                  static_cast<double>(j) / rows, 0.0);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const int32_t a = j * (columns + 1) + i, b = a + 1, c = a + columns + 1, d = c + 1;
+      base.triangles.push_back({a, b, d});
+      base.triangles.push_back({a, d, c});
+    }
+  const TriMesh swatch = make_chainmail(ChainmailOptions::small());
+  const SurfaceRun run = run_surface(base, swatch, 0.25);
+  expect_quality(run, swatch, "non-uniform square");
+  std::printf("non-uniform square: %d patches, %d cells, %d holes\n", run.stats.patches, run.stats.cells, run.stats.holes);
+}
+
 // Weft yarns (told from warps by the source element) run along the field: the mean unsigned angle
 // between a weft's local direction (principal axis of its vertices within 1.5 yarn pitches) and the
 // field at the nearest base vertex, both in that vertex's tangent plane, stays under 15 degrees.

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -27,6 +28,14 @@ struct TriMesh {
 
   size_t num_vertices() const { return positions.size(); }
   size_t num_faces() const { return triangles.size(); }
+};
+
+//! Hash of a position's exact bits, for finding vertices that did not move (equal doubles).
+struct ExactPositionHash {
+  size_t operator()(const Vec3& p) const {
+    const std::hash<double> h;
+    return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ull) ^ (h(p.z) * 0xc2b2ae3d27d4eb4full);
+  }
 };
 
 }  // namespace meshquilt

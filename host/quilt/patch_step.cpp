@@ -23,17 +23,10 @@ TriMesh translated(const TriMesh& mesh, const glm::dvec2& t) {
   return out;
 }
 
-struct Vec3Hash {
-  size_t operator()(const Vec3& p) const {
-    const std::hash<double> h;
-    return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ull) ^ (h(p.z) * 0xc2b2ae3d27d4eb4full);
-  }
-};
-
 // True when every pinned vertex of `before` is still a vertex of `after`, at its exact position.
 bool keeps_pinned(const PlaneElement& before, const TriMesh& after) {
   if (before.pinned.empty()) return true;
-  std::unordered_set<Vec3, Vec3Hash> positions(after.positions.begin(), after.positions.end());
+  std::unordered_set<Vec3, ExactPositionHash> positions(after.positions.begin(), after.positions.end());
   for (size_t v = 0; v < before.pinned.size(); ++v)
     if (before.pinned[v] && !positions.count(before.mesh.positions[v])) return false;
   return true;

@@ -41,13 +41,6 @@ void update_bounds(SurfaceElement& e, const BaseSurface& base) {
   }
 }
 
-struct PlaneKeyHash {
-  size_t operator()(const Vec3& p) const {
-    const std::hash<double> h;
-    return h(p.x) ^ (h(p.y) * 0x9e3779b97f4a7c15ull) ^ (h(p.z) * 0xc2b2ae3d27d4eb4full);
-  }
-};
-
 // The part of an element inside a patch, and how its vertices map back.
 struct ElementPart {
   int32_t element = -1;
@@ -296,7 +289,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
         // their local coordinates exactly (the pinned ones among them join the part to the rest).
         const ElementPart& part = parts[l];
         SurfaceElement& element = elements[part.element];
-        std::unordered_map<Vec3, int32_t, PlaneKeyHash> unmoved;
+        std::unordered_map<Vec3, int32_t, ExactPositionHash> unmoved;
         {
           const size_t count = part.element_vertex.size();
           std::vector<Vec3> before(count);
