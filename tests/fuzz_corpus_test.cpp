@@ -36,6 +36,7 @@ TEST(FuzzCorpus, Off) { replay("off", off_body); }
 TEST(FuzzCorpus, Stl) { replay("stl", stl_body); }
 TEST(FuzzCorpus, Swatch) { replay("swatch", swatch_body); }
 TEST(FuzzCorpus, Netpbm) { replay("netpbm", netpbm_body); }
+TEST(FuzzCorpus, Field) { replay("field", field_body); }
 
 // The seeds are valid files: each must parse, not only not crash.
 TEST(FuzzCorpus, SeedMeshesParse) {
@@ -47,6 +48,20 @@ TEST(FuzzCorpus, SeedMeshesParse) {
       EXPECT_NO_THROW(parse_mesh(bytes, entry.path().extension().string(), entry.path().string()));
     }
   }
+}
+
+// The field seeds not named bad_* are valid field files: each must parse.
+TEST(FuzzCorpus, SeedFieldsParse) {
+  const std::filesystem::path dir = std::filesystem::path(MESHQUILT_FUZZ_DIR) / "corpus" / "field";
+  size_t valid = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().filename().string().rfind("bad_", 0) == 0) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NO_THROW(parse_field(bytes, entry.path().string(), field_base())) << entry.path();
+    ++valid;
+  }
+  EXPECT_GT(valid, 0u);
 }
 
 }  // namespace

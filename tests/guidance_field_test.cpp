@@ -325,6 +325,55 @@ TEST_F(FieldFile, BadContentIsAnInvalidOption) {
   expect_invalid("badpoint.json", R"({"directions": [{"point": [1, 2], "direction": [1, 0, 0]}]})", "point");
 }
 
+TEST_F(FieldFile, ParsesTextUnderTheGivenName) {
+  const std::string text = R"({"directions": [{"vertex": 2, "direction": [0, 0, 3]},
+      {"point": [0.1, 0.2, 0.3], "direction": [1, 1, 0]}]})";
+  const std::vector<FieldConstraint> parsed = parse_field(text, "inline field", mesh_);
+  const std::vector<FieldConstraint> read = read_field_file(write("same.json", text), mesh_);
+  ASSERT_EQ(parsed.size(), read.size());
+  for (size_t k = 0; k < parsed.size(); ++k) {
+    EXPECT_EQ(parsed[k].vertex, read[k].vertex);
+    EXPECT_EQ(parsed[k].direction, read[k].direction);
+  }
+  // A text that is not NUL-terminated where the view ends: only the view is parsed.
+  const std::string padded = std::string(R"({"directions": []})") + "garbage";
+  EXPECT_TRUE(parse_field(std::string_view(padded).substr(0, padded.size() - 7), "view", mesh_).empty());
+  const std::vector<std::string> bad_texts = {
+      R"({"directions": [{"vertex": 18446744073709551615, "direction": [1, 0, 0]}]})", R"({"directions": [)"};
+  for (const std::string& bad : bad_texts) {
+    try {
+      parse_field(bad, "inline field", mesh_);
+      ADD_FAILURE() << "no InputError for " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.code(), ExitCode::invalid_option);
+      EXPECT_EQ(std::string(e.what()).rfind("inline field: ", 0), 0u) << e.what();
+    }
+  }
+}
+
+// Points so far away that squared distances overflow: on a base of that size the nearest vertex
+// is still found; from the unit sphere every vertex is equally far (the tie goes to the first).
+// Such a point once picked no vertex, and the interpolation wrote before its arrays.
+TEST_F(FieldFile, AFarPointPicksTheNearestVertex) {
+  TriMesh huge = mesh_;
+  for (Vec3& q : huge.positions) q *= 1e200;
+  size_t low = 0;
+  for (size_t v = 1; v < huge.num_vertices(); ++v)
+    if (huge.positions[v].z < huge.positions[low].z) low = v;
+  const std::vector<FieldConstraint> below =
+      parse_field(R"({"directions": [{"point": [0, 0, -3e200], "direction": [1, 0, 0]}]})", "far", huge);
+  ASSERT_EQ(below.size(), 1u);
+  EXPECT_EQ(below[0].vertex, static_cast<int32_t>(low));
+
+  const std::vector<FieldConstraint> c = parse_field(
+      R"({"directions": [{"point": [1e300, -1e300, 0], "direction": [0, 0, 1]}]})", "far", mesh_);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].vertex, 0);
+  const BaseSurface base(mesh_);
+  const GuidanceField field = interpolate_field(base, c);
+  for (const Vec3& d : field.directions) EXPECT_NEAR(glm::length(d), 1.0, 1e-12);
+}
+
 TEST_F(FieldFile, MissingFileIsUnreadable) {
   const fs::path file = dir_ / "absent.json";
   try {

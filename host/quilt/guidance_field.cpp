@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <Eigen/Dense>
@@ -70,15 +71,11 @@ Vec3 principal_axis(const BaseSurface& base) {
 
 }  // namespace
 
-std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, const TriMesh& base) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, file.string() + ": cannot read the field file");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string name = file.string();
+std::vector<FieldConstraint> parse_field(std::string_view text, const std::string& name,
+                                         const TriMesh& base) {
   nlohmann::json document;
   try {
-    document = nlohmann::json::parse(text.str());
+    document = nlohmann::json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::exception& e) {
     throw InputError(name + ": not valid JSON (" + std::string(e.what()) + ")", ExitCode::invalid_option);
   }
@@ -105,20 +102,33 @@ std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, 
       c.vertex = static_cast<int32_t>(v);
     } else if (entry.contains("point")) {
       const Vec3 p = parse_vector(entry["point"], "point", where);
-      double best = std::numeric_limits<double>::max();
+      // hypot, not glm::distance: the squares overflow for a point beyond about 1e154, every
+      // distance would be infinite and no vertex chosen. Ties (and a difference that overflows
+      // itself) go to the first vertex.
+      double best = std::numeric_limits<double>::infinity();
       for (size_t v = 0; v < base.num_vertices(); ++v) {
-        const double d = glm::distance(p, base.positions[v]);
-        if (d < best) {
-          best = d;
+        const Vec3 d = p - base.positions[v];
+        const double distance = std::hypot(d.x, d.y, d.z);
+        if (c.vertex < 0 || distance < best) {
+          best = distance;
           c.vertex = static_cast<int32_t>(v);
         }
       }
+      if (c.vertex < 0) throw InputError(where + ": the base has no vertices", ExitCode::invalid_option);
     } else {
       throw InputError(where + ": needs a 'vertex' or a 'point'", ExitCode::invalid_option);
     }
     constraints.push_back(c);
   }
   return constraints;
+}
+
+std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, const TriMesh& base) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError(ExitCode::file_unreadable, file.string() + ": cannot read the field file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_field(text.str(), file.string(), base);
 }
 
 Vec3 GuidanceField::at(const BaseSurface& base, const SurfacePoint& p) const {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "mesh/tri_mesh.h"
@@ -18,11 +19,16 @@ struct FieldConstraint {
   Vec3 direction{1.0, 0.0, 0.0};
 };
 
-//! Reads a field file: JSON `{"directions": [{"vertex": 12, "direction": [x, y, z]},
+//! Parses the text of a field file: JSON `{"directions": [{"vertex": 12, "direction": [x, y, z]},
 //! {"point": [x, y, z], "direction": [x, y, z]}, ...]}`; a `point` goes to the nearest base vertex.
-//! \throw IoError(file_unreadable) when the file cannot be read; InputError(invalid_option)
-//!        "FILE: problem" for malformed JSON, a missing or non-numeric direction, a zero or
-//!        non-finite direction, or a vertex that does not exist.
+//! `name` (the file) starts every message.
+//! \throw InputError(invalid_option) "NAME: problem" for malformed JSON, a missing or non-numeric
+//!        direction, a zero or non-finite direction, a vertex that does not exist, or a point on a
+//!        base without vertices.
+std::vector<FieldConstraint> parse_field(std::string_view text, const std::string& name, const TriMesh& base);
+
+//! Reads a field file and parses it with parse_field.
+//! \throw IoError(file_unreadable) when the file cannot be read; what parse_field throws.
 std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, const TriMesh& base);
 
 //! A unit tangent direction per base vertex.

@@ -5,6 +5,7 @@
 // sanitizer report, another exception type) is a finding.
 
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -14,6 +15,8 @@
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/validation.h"
+#include "quilt/conformal_patch.h"
+#include "quilt/guidance_field.h"
 #include "swatch/netpbm.h"
 
 namespace meshquilt::fuzz {
@@ -60,6 +63,29 @@ inline void netpbm_body(const uint8_t* data, size_t size) {
     for (double v : image.values) sum += v;  // touch every pixel: all must be initialised
     if (!(image.values.size() == static_cast<size_t>(image.width) * image.height) || !(sum >= 0.0)) __builtin_trap();
   } catch (const IoError&) {
+  }
+}
+
+// The guidance-field reader against a fixed closed tetrahedron, then the interpolation the
+// constraints feed (as `synth --field` runs them): every constraint must name a base vertex and
+// every interpolated direction must be a finite unit vector.
+inline const TriMesh& field_base() {
+  static const TriMesh base{
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0.3}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, {}, {}};
+  return base;
+}
+
+inline void field_body(const uint8_t* data, size_t size) {
+  const TriMesh& base = field_base();
+  static const BaseSurface surface(base);
+  try {
+    const std::vector<FieldConstraint> constraints = parse_field(as_text(data, size), "fuzz", base);
+    for (const FieldConstraint& c : constraints)
+      if (c.vertex < 0 || c.vertex >= static_cast<int32_t>(base.num_vertices())) __builtin_trap();
+    const GuidanceField field = interpolate_field(surface, constraints);
+    for (const Vec3& d : field.directions)
+      if (!(std::abs(d.x * d.x + d.y * d.y + d.z * d.z - 1.0) < 1e-9)) __builtin_trap();
+  } catch (const Error&) {
   }
 }
 

@@ -138,3 +138,28 @@ put("netpbm", "p4.pbm", b"P4\n10 2\n" + bytes([0b10101010, 0b11000000, 0b0101010
 put("netpbm", "p5.pgm", b"P5\n3 2\n255\n" + bytes([0, 100, 255, 7, 8, 9]))
 put("netpbm", "p5_16bit.pgm", b"P5 2 1 65535\n" + bytes([0xFF, 0xFF, 0x01, 0x00]))
 put("netpbm", "p6.ppm", b"P6\n2 1\n255\n" + bytes([255, 0, 0, 0, 0, 255]))
+
+# The guidance-field target: JSON field files against the fuzz body's tetrahedron (vertices 0-3).
+# Files named bad_* are rejected with an InputError; every other one must parse.
+fields = {
+    "vertex.json": '{"directions": [{"vertex": 1, "direction": [1, 0, 0]}]}\n',
+    "point.json": '{"directions": [{"point": [0.9, 0.1, 0.0], "direction": [0, 1, 0]}]}\n',
+    "mixed.json": '{\n  "directions": [\n    {"vertex": 0, "direction": [1.5e0, -2, 0.25]},\n'
+                  '    {"point": [-1E-3, 2.0, 0.3], "direction": [0, 0, 1]},\n'
+                  '    {"vertex": 3, "point": [0, 0, 0], "direction": [1, 1, 1]}\n  ]\n}\n',
+    "all_vertices.json": '{"directions": [' + ", ".join(
+        '{"vertex": %d, "direction": [%d, 1, 0]}' % (v, v + 1) for v in range(4)) + ']}',
+    "repeated.json": '{"directions": [{"vertex": 2, "direction": [1, 0, 0]}, {"vertex": 2, "direction": [0, 1, 0]}]}',
+    "empty.json": '{"directions": []}',
+    "extremes.json": '{"directions": [{"vertex": 0, "direction": [1e308, -1e308, 5e-324]}, '
+                     '{"point": [1e300, -1e300, 0], "direction": [0, 0, 1e-150]}]}',
+    # Nonzero but its length underflows: read as a zero direction today.
+    "bad_underflow.json": '{"directions": [{"vertex": 0, "direction": [0, 0, 4.9e-324]}]}',
+    "extra_keys.json": '{"comment": "caf\\u00e9 \\"field\\"", "version": null, "flags": [true, false, {}],'
+                       ' "directions": [{"vertex": 1, "direction": [0, 0, 1], "weight": -0.5, "note": [[]]}]}',
+    "bad_vertex.json": '{"directions": [{"vertex": 99, "direction": [1, 0, 0]}]}',
+    "bad_zero.json": '{"directions": [{"vertex": 0, "direction": [0, 0, 0]}]}',
+    "bad_json.json": '{"directions": [{"vertex": 0, "direction": [1, 0,',
+}
+for name, data in fields.items():
+    put("field", name, data)
