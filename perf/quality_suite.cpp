@@ -32,6 +32,7 @@
 
 #include "inspect/coverage.h"
 #include "mesh/mesh_io.h"
+#include "split_list.h"
 
 namespace {
 
@@ -70,14 +71,6 @@ int spawn(const std::vector<std::string>& argv, const std::string& out = "/dev/n
   int status = 0;
   waitpid(pid, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream s(text);
-  for (std::string part; std::getline(s, part, sep);)
-    if (!part.empty()) parts.push_back(part);
-  return parts;
 }
 
 // Longer x-y side of each element's bounding box (elements by the mesh's per-face ids).
@@ -175,8 +168,8 @@ int main(int argc, char** argv) {
   fs::path work = fs::temp_directory_path() / ("meshquilt_quality_" + std::to_string(getpid()));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
-    if (flag == "--seeds") seeds = split(value, ',');
-    else if (flag == "--kinds") kinds = split(value, ',');
+    if (flag == "--seeds") seeds = meshquilt::perf::split(value, ',');
+    else if (flag == "--kinds") kinds = meshquilt::perf::split(value, ',');
     else if (flag == "--plane") plane = value;
     else if (flag == "--work") work = value;
     else {
@@ -198,7 +191,7 @@ int main(int argc, char** argv) {
       const fs::path swatch = work / (name + "-swatch.ply"), out = work / (name + ".ply");
       const fs::path stats = work / (name + ".json"), report = work / (name + "-inspect.json");
       std::vector<std::string> make = {cli, "swatch"};
-      for (const auto& a : split(kind.swatch_args, ' ')) make.push_back(a);
+      for (const auto& a : meshquilt::perf::split(kind.swatch_args, ' ')) make.push_back(a);
       make.insert(make.end(), {"--preset", "small", "--seed", seed, "-o", swatch.string()});
       if (spawn(make) != 0) {
         std::fprintf(stderr, "quality_suite: making the %s swatch failed\n", name.c_str());

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "split_list.h"
+
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -66,14 +68,6 @@ int spawn(const std::vector<std::string>& argv, long* peak_kib) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream s(text);
-  for (std::string part; std::getline(s, part, sep);)
-    if (!part.empty()) parts.push_back(part);
-  return parts;
-}
-
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
@@ -90,8 +84,8 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--runs") runs = std::max(1, std::stoi(value));
-    else if (flag == "--backends") backends = split(value, ',');
-    else if (flag == "--scenarios") scenarios = split(value, ',');
+    else if (flag == "--backends") backends = meshquilt::perf::split(value, ',');
+    else if (flag == "--scenarios") scenarios = meshquilt::perf::split(value, ',');
     else if (flag == "--scale") scale = std::stod(value);
     else {
       std::fprintf(stderr, "table1_runner: unknown option %s\n", flag.c_str());
@@ -108,7 +102,7 @@ int main(int argc, char** argv) {
     if (std::find(scenarios.begin(), scenarios.end(), sc.key) == scenarios.end()) continue;
     const auto swatch = work / (sc.key + ".ply");
     std::vector<std::string> make = {cli, "swatch"};
-    for (const auto& a : split(sc.swatch_args, ' ')) make.push_back(a);
+    for (const auto& a : meshquilt::perf::split(sc.swatch_args, ' ')) make.push_back(a);
     make.insert(make.end(), {"-o", swatch.string()});
     if (spawn(make, nullptr) != 0) {
       std::fprintf(stderr, "table1_runner: making the %s swatch failed\n", sc.key.c_str());

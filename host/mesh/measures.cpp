@@ -4,6 +4,15 @@
 
 namespace meshquilt {
 
+Box3 bounding_box(const std::vector<Vec3>& points) {
+  Box3 box;
+  for (const Vec3& p : points) {
+    box.lo = glm::min(box.lo, p);
+    box.hi = glm::max(box.hi, p);
+  }
+  return box;
+}
+
 double mean_edge_length(const TriMesh& mesh) {
   if (mesh.num_faces() == 0) return 0.0;
   double sum = 0.0;

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "mesh/measures.h"
 #include "mesh/validation.h"
 
 namespace meshquilt {
@@ -29,13 +30,8 @@ void check_swatch_proportions(const TriMesh& swatch, const std::string& source) 
       fail(vertex_text(v) + " lies beyond +-1e15");
     }
   }
-  Vec3 low = swatch.positions.front();
-  Vec3 high = low;
-  for (const Vec3& p : swatch.positions) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
-  const Vec3 extent = high - low;
+  const Box3 box = bounding_box(swatch.positions);
+  const Vec3 extent = box.extent();
   const int height = thinnest_axis(extent);
   const double wide = std::max(extent[(height + 1) % 3], extent[(height + 2) % 3]);
   const double narrow = std::min(extent[(height + 1) % 3], extent[(height + 2) % 3]);
@@ -94,13 +90,8 @@ TriMesh orient_swatch(const TriMesh& swatch, const std::string& source) {
   validate_mesh(swatch, source);
   // First: a stray vertex also spoils the thickness test below, whose message would mislead.
   check_swatch_proportions(swatch, source);
-  Vec3 low = swatch.positions.front();
-  Vec3 high = low;
-  for (const Vec3& p : swatch.positions) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
-  const Vec3 extent = high - low;
+  const Box3 box = bounding_box(swatch.positions);
+  const Vec3 low = box.lo, extent = box.extent();
   const double diagonal = glm::length(extent);
   const int height = thinnest_axis(extent);
   // A cyclic permutation (x,y,z) -> (y,z,x) or (z,x,y) has determinant +1; a swap of two axes

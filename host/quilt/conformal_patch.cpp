@@ -56,12 +56,7 @@ BaseSurface::BaseSurface(const TriMesh& base) : mesh(base) {
   face_areas.resize(base.num_faces());
   vertex_faces.resize(base.num_vertices());
   edges.resize(base.num_vertices());
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-  for (const Vec3& p : base.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  diagonal = glm::length(hi - lo);
+  diagonal = glm::length(bounding_box(base.positions).extent());
   for (size_t f = 0; f < base.num_faces(); ++f) {
     const Tri& t = base.triangles[f];
     const Vec3 n = glm::cross(base.positions[t[1]] - base.positions[t[0]], base.positions[t[2]] - base.positions[t[0]]);

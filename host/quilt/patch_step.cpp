@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <unordered_set>
 
 #include <glm/geometric.hpp>
@@ -249,15 +248,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     return near;
   };
   // The collision policy, in the space the output will live in.
-  std::vector<std::pair<Vec3, Vec3>> obstacle_bounds;
-  for (const TriMesh& m : request.obstacles) {
-    Vec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-    for (const Vec3& p : m.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    obstacle_bounds.emplace_back(lo, hi);
-  }
+  std::vector<Box3> obstacle_bounds;
+  for (const TriMesh& m : request.obstacles) obstacle_bounds.push_back(bounding_box(m.positions));
   const auto collides = [&](const TriMesh& mesh, int32_t self) {
     const std::vector<const TriMesh*> near = neighbours(mesh, self);
     if (!request.to_space) return passes_through(mesh, near);
@@ -267,16 +259,9 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     for (const TriMesh* m : near) placed_near.push_back(request.to_space(*m));
     std::vector<const TriMesh*> pointers;
     for (const TriMesh& m : placed_near) pointers.push_back(&m);
-    Vec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-    for (const Vec3& p : placed.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    for (size_t k = 0; k < request.obstacles.size(); ++k) {
-      const auto& [olo, ohi] = obstacle_bounds[k];
-      if (olo.x <= hi.x && lo.x <= ohi.x && olo.y <= hi.y && lo.y <= ohi.y && olo.z <= hi.z && lo.z <= ohi.z)
-        pointers.push_back(&request.obstacles[k]);
-    }
+    const Box3 box = bounding_box(placed.positions);
+    for (size_t k = 0; k < request.obstacles.size(); ++k)
+      if (obstacle_bounds[k].overlaps(box)) pointers.push_back(&request.obstacles[k]);
     return passes_through(placed, pointers);
   };
   // A deformation that pushes an output element into a neighbour is undone: the element keeps

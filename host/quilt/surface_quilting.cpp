@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "error.h"
+#include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "quilt/broken_elements.h"
 #include "quilt/hole_tracker.h"
@@ -28,17 +29,14 @@ struct SurfaceElement {
   std::vector<LocalVertex> vertices;
   std::vector<Tri> triangles;
   int32_t source = -1;
-  Vec3 lo{0.0}, hi{0.0};  // bounds of the base points under it, for culling
+  Box3 bounds;  // of the base points under it, for culling
 };
 
 void update_bounds(SurfaceElement& e, const BaseSurface& base) {
-  e.lo = Vec3(std::numeric_limits<double>::max());
-  e.hi = Vec3(std::numeric_limits<double>::lowest());
-  for (const LocalVertex& v : e.vertices) {
-    const Vec3 p = base.position(v.point);
-    e.lo = glm::min(e.lo, p);
-    e.hi = glm::max(e.hi, p);
-  }
+  std::vector<Vec3> points;
+  points.reserve(e.vertices.size());
+  for (const LocalVertex& v : e.vertices) points.push_back(base.position(v.point));
+  e.bounds = bounding_box(points);
 }
 
 // The part of an element inside a patch, and how its vertices map back.
@@ -46,6 +44,7 @@ struct ElementPart {
   int32_t element = -1;
   std::vector<int32_t> element_vertex;  // part vertex -> element vertex
   std::vector<uint8_t> face_in_part;    // #element faces
+  std::vector<Vec3> plane_positions;    // part vertex -> where it was put in the plane
 };
 
 // Angle that turns the field direction at `seed` (mapped into the patch's plane) onto +x.
@@ -162,7 +161,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
       for (size_t e = 0; e < elements.size(); ++e) {
         if (!alive[e]) continue;
         const SurfaceElement& element = elements[e];
-        const Vec3 nearest = glm::clamp(centre, element.lo, element.hi);
+        const Vec3 nearest = glm::clamp(centre, element.bounds.lo, element.bounds.hi);
         if (glm::distance(nearest, centre) > reach) continue;
         std::vector<uint8_t> vertex_in(element.vertices.size());
         for (size_t v = 0; v < element.vertices.size(); ++v)
@@ -219,6 +218,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
         if (!any_pinned) plane.pinned.clear();
         plane.bounds = xy_bounds(plane.mesh);
         plane.source = element.source;
+        part.plane_positions = plane.mesh.positions;
         layer.push_back(std::move(plane));
         parts.push_back(std::move(part));
       }
@@ -290,15 +290,8 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
         const ElementPart& part = parts[l];
         SurfaceElement& element = elements[part.element];
         std::unordered_map<Vec3, int32_t, ExactPositionHash> unmoved;
-        {
-          const size_t count = part.element_vertex.size();
-          std::vector<Vec3> before(count);
-          for (size_t k = 0; k < count; ++k) {
-            const LocalVertex& lv = element.vertices[part.element_vertex[k]];
-            before[k] = Vec3(patch.to_plane(lv.point), lv.height / height_unit);
-            unmoved.emplace(before[k], part.element_vertex[k]);
-          }
-        }
+        for (size_t k = 0; k < part.element_vertex.size(); ++k)
+          unmoved.emplace(part.plane_positions[k], part.element_vertex[k]);
         SurfaceElement rebuilt;
         rebuilt.source = plane.source;
         std::vector<int32_t> kept_index(element.vertices.size(), -1);
