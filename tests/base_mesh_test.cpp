@@ -105,6 +105,37 @@ TEST(PrepareBase, OpenComponentFollowsItsFirstFace) {
   expect_same_oriented_faces(prepare_base(first_flipped, "grid"), reversed);
 }
 
+// Share of the area whose face normal looks away from `centre`, computed here from the faces.
+double area_facing_away(const TriMesh& m, const Vec3& centre) {
+  double away = 0.0, total = 0.0;
+  for (const Tri& t : m.triangles) {
+    const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+    const Vec3 n = glm::cross(b - a, c - a);
+    const double area = glm::length(n);
+    total += area;
+    if (glm::dot(n, (a + b + c) / 3.0 - centre) > 0.0) away += area;
+  }
+  return away / total;
+}
+
+TEST(PrepareBase, OpenDomeIsTurnedToFaceOut) {
+  // The upper half of a sphere, inside out and scrambled: an open component with an outside.
+  const Vec3 centre(1.0, 2.0, -1.0);
+  const TriMesh sphere = test::uv_sphere(12, 20, 1.5, centre);
+  TriMesh dome;
+  dome.positions = sphere.positions;
+  for (const Tri& t : sphere.triangles) {
+    const Vec3 c = (sphere.positions[t[0]] + sphere.positions[t[1]] + sphere.positions[t[2]]) / 3.0;
+    if (c.z > centre.z + 0.3) dome.triangles.push_back({t[0], t[2], t[1]});
+  }
+  ASSERT_LT(area_facing_away(dome, centre), 0.01);
+  for (uint32_t seed : {1u, 2u}) {
+    const TriMesh prepared = prepare_base(randomly_flipped(dome, seed), "dome");
+    EXPECT_GT(count_edges(prepared).boundary, 0);
+    EXPECT_GT(area_facing_away(prepared, centre), 0.99);
+  }
+}
+
 TEST(PrepareBase, EachComponentOrientedOnItsOwn) {
   // An outward sphere, an inside-out one and an open grid, all in one mesh, faces shuffled in flip.
   TriMesh a = test::uv_sphere(6, 10, 1.0, Vec3(-3.0, 0.0, 0.0));
@@ -251,6 +282,15 @@ TEST(PrepareBaseShared, OpenHeadIsAccepted) {
   EXPECT_GT(edges.boundary, 0);
   EXPECT_EQ(edges.misoriented, 0);
   EXPECT_EQ(prepared.num_faces(), raw.num_faces());
+  // The scan is open at the neck: its faces must still look out of the head, whichever way the
+  // file ran them (the texture grows on the side the normals point to).
+  Vec3 centre(0.0);
+  for (const Vec3& p : raw.positions) centre += p;
+  centre /= static_cast<double>(raw.num_vertices());
+  EXPECT_GT(area_facing_away(prepared, centre), 0.8);
+  TriMesh reversed = raw;
+  for (Tri& t : reversed.triangles) std::swap(t[1], t[2]);
+  EXPECT_GT(area_facing_away(prepare_base(reversed, "head.off"), centre), 0.8);
 }
 
 TEST(PrepareBaseShared, TwoComponentsOfTheKnotAreBothOutward) {

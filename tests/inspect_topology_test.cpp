@@ -326,8 +326,8 @@ TEST(Inspect, GeneratedSwatchesMatchBruteForce) {
   // The project's own swatches: chain mail rings are closed, linked and do not touch.
   const TriMesh mail = weld_vertices(make_chainmail(ChainmailOptions::small()));
   const Reference ref = brute_force(mail);
-  EXPECT_EQ(ref.elements, 6);
-  EXPECT_EQ(ref.closed, 6);
+  EXPECT_EQ(ref.elements, 8);
+  EXPECT_EQ(ref.closed, 8);
   EXPECT_EQ(ref.between, 0);
   expect_report_matches(mail, ref);
   const TriMesh weave = weld_vertices(make_weave(WeaveOptions::small()));

@@ -33,7 +33,7 @@ TEST(SwatchCli, EveryKindWritesItsSmallPreset) {
     int elements;
   };
   const Case cases[] = {
-      {"chainmail --preset small --rows 4", 12},
+      {"chainmail --preset small --columns 3", 12},
       {"weave --preset small --pattern twill:2/3", 10},
       {"weave --preset small --only wefts", 4},
       {"wire --preset small", 10},

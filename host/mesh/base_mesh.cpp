@@ -72,14 +72,28 @@ TriMesh prepare_base(const TriMesh& input, const std::string& source) {
         }
       }
     }
-    if (!closed) continue;
-    // Closed: outward means a positive signed volume.
-    double volume = 0.0;
+    // Outward: closed, a positive signed volume; open (a scan with a hole at the neck), a positive
+    // volume of the cone from the component's centroid, i.e. the faces mostly look away from it.
+    // A flat or nearly flat open sheet has no outside: it keeps the file's own orientation.
+    Vec3 centre(0.0);
+    double area = 0.0;
+    for (int32_t f : component) {
+      const Tri& t = mesh.triangles[f];
+      const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+      const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
+      centre += w * (a + b + c) / 3.0;
+      area += w;
+    }
+    if (area > 0.0) centre /= area;
+    double volume = 0.0, extent = 0.0;
     for (int32_t f : component) {
       Tri t = mesh.triangles[f];
       if (flip[f]) std::swap(t[1], t[2]);
-      volume += glm::dot(mesh.positions[t[0]], glm::cross(mesh.positions[t[1]], mesh.positions[t[2]]));
+      const Vec3 a = mesh.positions[t[0]] - centre, b = mesh.positions[t[1]] - centre, c = mesh.positions[t[2]] - centre;
+      volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+      extent = std::max({extent, glm::length(a), glm::length(b), glm::length(c)});
     }
+    if (!closed && std::abs(volume) <= 1e-3 * area * extent) continue;
     if (volume < 0.0)
       for (int32_t f : component) flip[f] = static_cast<int8_t>(1 - flip[f]);
   }

@@ -44,8 +44,10 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   const Rect2 domain{glm::dvec2(0.0), glm::dvec2(options.width * extent.x, options.height * extent.y)};
   PlaneGrid grid;
   grid.cell = cell;
-  grid.nx = std::max(1, static_cast<int>(std::ceil(domain.hi.x / cell - 1e-9)));
-  grid.ny = std::max(1, static_cast<int>(std::ceil(domain.hi.y / cell - 1e-9)));
+  // The cells whose centre lies in the plane: a last, partial row or column with its centre
+  // outside could never be covered and would count as a hole.
+  grid.nx = std::max(1, static_cast<int>(std::ceil(domain.hi.x / cell - 0.5 - 1e-9)));
+  grid.ny = std::max(1, static_cast<int>(std::ceil(domain.hi.y / cell - 0.5 - 1e-9)));
   const int swatch_nx = std::max(1, static_cast<int>(std::floor(extent.x / cell + 1e-9)));
   const int swatch_ny = std::max(1, static_cast<int>(std::floor(extent.y / cell + 1e-9)));
   const int sub_nx = sub_patch_cells(swatch_nx, grid.nx, options.sub_patch_fraction);

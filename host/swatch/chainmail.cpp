@@ -133,8 +133,11 @@ void validate(const ChainmailOptions& o) {
 
 ChainmailOptions ChainmailOptions::small() {
   ChainmailOptions o;
-  o.rows = 2;
-  o.columns = 3;
+  // Four rows: a swatch must hold one period of the pattern (two rows, leaning either way) plus
+  // the overlap a patch matches on; with two rows a patch can only add a row of the wrong lean,
+  // and the output falls apart into strips.
+  o.rows = 4;
+  o.columns = 2;
   o.ring_segments = 16;
   o.wire_segments = 6;
   return o;
