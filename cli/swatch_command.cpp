@@ -204,6 +204,7 @@ void add_heightfield(CLI::App* parent, const std::shared_ptr<Common>& common) {
   b->add(cmd, "--size", &HeightfieldOptions::size, "length of the longer side");
   b->add(cmd, "--height", &HeightfieldOptions::height, "relief height (white minus black)");
   b->add(cmd, "--base", &HeightfieldOptions::base, "slab thickness below black");
+  b->add(cmd, "--tiles", &HeightfieldOptions::tiles, "N x N separate tiles with a pixel of grout between them (default 1: one piece)");
   auto open = std::make_shared<bool>(false);
   cmd->add_flag("--open", *open, "the top sheet alone instead of a closed slab");
   cmd->callback([common, b, image, open] {

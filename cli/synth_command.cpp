@@ -62,6 +62,7 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
   return {
       {"patches", stats.patches},
       {"stitched_pairs", stats.merges.stitched},
+      {"bridged_pairs", stats.merges.bridged},
       {"replaced_elements", stats.merges.replaced},
       {"yielded_inputs", stats.merges.kept},
       {"rejected_inputs", stats.merges.rejected_inputs},

@@ -53,6 +53,7 @@ const std::vector<Kind> kKinds = {
     {"wire", "wire", false, true},
     {"fruit", "fruit", true, true},
     {"nuts", "nuts", true, true},
+    {"heightfield-tiles", "heightfield --tiles 4", false, true},
     {"heightfield-open", "heightfield --open", false, false},
 };
 
@@ -90,66 +91,6 @@ std::vector<double> element_lengths(const meshquilt::TriMesh& m) {
     lengths.push_back(std::max(d.x, d.y));
   }
   return lengths;
-}
-
-// The smallest cell, a whole fraction of the swatch's longer side, at which the swatch itself
-// covers its own footprint at every phase of the grid: cells sized from the swatch's largest gap, so that long output
-// elements do not enlarge them (inspect's cells are half the median output element).
-double swatch_cell(const meshquilt::TriMesh& swatch, double swatch_length) {
-  for (int n = 64; n >= 1; --n) {
-    const double cell = swatch_length / n;
-    // At four phases of the grid (the margin moves its origin by quarter cells), so that a
-    // sparse swatch does not pass only because its wires happen to fall into every cell.
-    bool covers = true;
-    for (int k = 0; k < 4 && covers; ++k) {
-      meshquilt::PlaneCoverageOptions shifted;
-      shifted.margin = 0.02 + k * cell / (4.0 * swatch_length);
-      covers = meshquilt::plane_coverage(swatch, cell, shifted).coverage >= 1.0;
-    }
-    if (covers) return cell;
-  }
-  return swatch_length;
-}
-
-// The faces of `mesh` whose centroid lies within the 2nd to 98th percentile of face centroids
-// in x and in y, with two tiny faces pinning the bounding box to that box: the plane's body,
-// without the few elements that stick out past its border and would enlarge the footprint.
-meshquilt::TriMesh plane_body(const meshquilt::TriMesh& mesh) {
-  using meshquilt::Vec3;
-  std::vector<Vec3> centroid;
-  for (const auto& t : mesh.triangles)
-    centroid.push_back((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0);
-  auto percentile = [&](int axis, double q) {
-    std::vector<double> v;
-    for (const Vec3& c : centroid) v.push_back(c[axis]);
-    const size_t k = std::min(v.size() - 1, static_cast<size_t>(q * v.size()));
-    std::nth_element(v.begin(), v.begin() + k, v.end());
-    return v[k];
-  };
-  const Vec3 lo(percentile(0, 0.02), percentile(1, 0.02), 0.0), hi(percentile(0, 0.98), percentile(1, 0.98), 0.0);
-  meshquilt::TriMesh body;
-  body.positions = mesh.positions;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const Vec3& c = centroid[f];
-    if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) body.triangles.push_back(mesh.triangles[f]);
-  }
-  const double tiny = 1e-6 * (hi.x - lo.x);
-  for (const Vec3& corner : {lo, hi}) {
-    const auto base = static_cast<int32_t>(body.positions.size());
-    body.positions.insert(body.positions.end(), {corner, corner + Vec3(tiny, 0, 0), corner + Vec3(0, tiny, 0)});
-    body.triangles.push_back({base, base + 1, base + 2});
-  }
-  // Unused vertices outside the box would still widen the bounding box.
-  std::vector<Vec3> kept;
-  std::vector<int32_t> index(body.positions.size(), -1);
-  for (auto& t : body.triangles)
-    for (int32_t& v : t) {
-      if (index[v] < 0) index[v] = static_cast<int32_t>(kept.size()), kept.push_back(body.positions[v]);
-      v = index[v];
-    }
-  body.positions = kept;
-  body.elements.assign(body.triangles.size(), 0);
-  return body;
 }
 
 std::string fixed(double value, int digits) {
@@ -225,10 +166,10 @@ int main(int argc, char** argv) {
       const double swatch_length = std::max(hi.x - lo.x, hi.y - lo.y);
       const meshquilt::TriMesh output = meshquilt::read_mesh(out);
       const std::vector<double> lengths = element_lengths(output);
-      const double cell = swatch_cell(swatch_mesh, swatch_length);
+      const double cell = meshquilt::self_covering_cell(swatch_mesh, swatch_length);
       meshquilt::PlaneCoverageOptions no_margin;
       no_margin.margin = 0.0;
-      const double fine_coverage = meshquilt::plane_coverage(plane_body(output), cell, no_margin).coverage;
+      const double fine_coverage = meshquilt::plane_coverage(meshquilt::plane_body(output), cell, no_margin).coverage;
       const double longest = lengths.empty() ? 0.0 : *std::max_element(lengths.begin(), lengths.end()) / swatch_length;
 
       std::vector<std::string> missed;

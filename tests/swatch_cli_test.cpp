@@ -42,6 +42,7 @@ TEST(SwatchCli, EveryKindWritesItsSmallPreset) {
       {"nuts --preset small --seed 9", 4},
       {"heightfield --preset small", 1},
       {"heightfield --preset small --open", 1},
+      {"heightfield --preset small --tiles 4", 16},
   };
   int n = 0;
   for (const Case& c : cases) {

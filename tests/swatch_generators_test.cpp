@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 #include <numbers>
 #include <numeric>
 #include <sstream>
@@ -902,6 +903,41 @@ TEST(Heightfield, SmallPresetClosedAndOpen) {
   // The open sheet's boundary is the rim of the pixel grid.
   EXPECT_EQ(element_topology(open)[0].boundary_edges, 4 * 15);
   EXPECT_EQ(element_topology(open)[0].euler, 1);
+}
+
+TEST(Heightfield, TilesAreSeparateSlabsWithGrout) {
+  HeightfieldOptions o = HeightfieldOptions::small();  // 16 x 16 pixels
+  o.tiles = 4;                                         // 4 pixels a tile: 3 x 3 quads, one spacing apart
+  const TriMesh tiles = make_heightfield(o);
+  check_swatch(tiles, {16, true, 2}, "heightfield_tiles");
+  check_round_trip(tiles, "heightfield_tiles");
+  EXPECT_EQ(tiles.num_faces(), 16u * (4 * 3 * 3 + 4 * (3 + 3)));
+  // Each tile's top is the one-piece slab's top over the same pixels: every tile vertex is a
+  // vertex of the one-piece slab, and no two tiles come closer than one pixel spacing.
+  const TriMesh whole = make_heightfield(HeightfieldOptions::small());
+  std::set<std::tuple<double, double, double>> slab;
+  for (const Vec3& p : whole.positions) slab.insert({p.x, p.y, p.z});
+  for (const Vec3& p : tiles.positions) EXPECT_TRUE(slab.count({p.x, p.y, p.z})) << p.x << " " << p.y << " " << p.z;
+  const double spacing = o.size / 15.0;
+  std::map<int32_t, std::pair<glm::dvec2, glm::dvec2>> box;
+  for (size_t f = 0; f < tiles.num_faces(); ++f)
+    for (int32_t v : tiles.triangles[f]) {
+      auto [it, fresh] = box.try_emplace(tiles.elements[f], glm::dvec2(1e300), glm::dvec2(-1e300));
+      it->second.first = glm::min(it->second.first, glm::dvec2(tiles.positions[v]));
+      it->second.second = glm::max(it->second.second, glm::dvec2(tiles.positions[v]));
+    }
+  for (const auto& [e, b] : box) EXPECT_NEAR(b.second.x - b.first.x, 3 * spacing, 1e-9) << e;
+  for (const auto& [a, ba] : box)
+    for (const auto& [b, bb] : box) {
+      if (a >= b) continue;
+      const double gap = std::max({bb.first.x - ba.second.x, ba.first.x - bb.second.x, bb.first.y - ba.second.y,
+                                   ba.first.y - bb.second.y});
+      EXPECT_GE(gap, spacing - 1e-9) << a << " " << b;
+    }
+  o.tiles = 6;  // 2 pixels a tile
+  EXPECT_EQ(error_code([&] { make_heightfield(o); }), ExitCode::invalid_option);
+  o.tiles = 0;
+  EXPECT_EQ(error_code([&] { make_heightfield(o); }), ExitCode::invalid_option);
 }
 
 TEST(Heightfield, HeightsFollowTheImageUpright) {

@@ -336,4 +336,57 @@ BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radi
   return out;
 }
 
+double self_covering_cell(const TriMesh& swatch, double swatch_length) {
+  for (int n = 64; n >= 1; --n) {
+    const double cell = swatch_length / n;
+    // At four phases of the grid (the margin moves its origin by quarter cells), so that a
+    // sparse swatch does not pass only because its wires happen to fall into every cell.
+    bool covers = true;
+    for (int k = 0; k < 4 && covers; ++k) {
+      PlaneCoverageOptions shifted;
+      shifted.margin = 0.02 + k * cell / (4.0 * swatch_length);
+      covers = plane_coverage(swatch, cell, shifted).coverage >= 1.0;
+    }
+    if (covers) return cell;
+  }
+  return swatch_length;
+}
+
+TriMesh plane_body(const TriMesh& mesh) {
+  std::vector<Vec3> centroid;
+  for (const auto& t : mesh.triangles)
+    centroid.push_back((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0);
+  auto percentile = [&](int axis, double q) {
+    std::vector<double> v;
+    for (const Vec3& c : centroid) v.push_back(c[axis]);
+    const size_t k = std::min(v.size() - 1, static_cast<size_t>(q * v.size()));
+    std::nth_element(v.begin(), v.begin() + k, v.end());
+    return v[k];
+  };
+  const Vec3 lo(percentile(0, 0.02), percentile(1, 0.02), 0.0), hi(percentile(0, 0.98), percentile(1, 0.98), 0.0);
+  TriMesh body;
+  body.positions = mesh.positions;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Vec3& c = centroid[f];
+    if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) body.triangles.push_back(mesh.triangles[f]);
+  }
+  const double tiny = 1e-6 * (hi.x - lo.x);
+  for (const Vec3& corner : {lo, hi}) {
+    const auto base = static_cast<int32_t>(body.positions.size());
+    body.positions.insert(body.positions.end(), {corner, corner + Vec3(tiny, 0, 0), corner + Vec3(0, tiny, 0)});
+    body.triangles.push_back({base, base + 1, base + 2});
+  }
+  // Unused vertices outside the box would still widen the bounding box.
+  std::vector<Vec3> kept;
+  std::vector<int32_t> index(body.positions.size(), -1);
+  for (auto& t : body.triangles)
+    for (int32_t& v : t) {
+      if (index[v] < 0) index[v] = static_cast<int32_t>(kept.size()), kept.push_back(body.positions[v]);
+      v = index[v];
+    }
+  body.positions = kept;
+  body.elements.assign(body.triangles.size(), 0);
+  return body;
+}
+
 }  // namespace meshquilt

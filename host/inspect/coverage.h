@@ -61,4 +61,15 @@ std::vector<double> signed_heights(const std::vector<Vec3>& points, const TriMes
 BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radius,
                            const BaseCoverageOptions& options = {});
 
+//! The smallest cell, swatch_length / n for a whole n <= 64, at which `swatch` covers its own
+//! footprint (plane_coverage 1.0) at four phases of the grid (origins a quarter cell apart, so
+//! a sparse swatch does not pass because its wires happen to cross every cell): cells sized from
+//! the swatch's largest gap, for measuring an output made of it at the swatch's own scale.
+double self_covering_cell(const TriMesh& swatch, double swatch_length);
+
+//! The faces of `mesh` whose centroid lies within the 2nd to 98th percentile of face centroids in
+//! x and in y, with two tiny faces pinning the bounding box to that box: a quilted plane's body,
+//! without the few elements that stick out past its border and would enlarge the footprint.
+TriMesh plane_body(const TriMesh& mesh);
+
 }  // namespace meshquilt

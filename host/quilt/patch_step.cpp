@@ -55,25 +55,48 @@ void rasterize_faces(const TriMesh& m, const PlaneGrid& grid, std::vector<uint8_
   }
 }
 
-// Cells whose centre lies inside the footprint, one cell away from its edges inside the domain,
-// and over which (within a cell) kept geometry lies or the placed swatch has none.
-std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
-                                   const Rect2& footprint, const PlaneGrid& grid,
-                                   const std::function<bool(const glm::dvec2&)>& inside_domain) {
-  const size_t count = static_cast<size_t>(grid.nx) * grid.ny;
-  std::vector<uint8_t> kept(count, 0), swatch(count, 0), covered(count, 0);
-  for (const PlaneElement& e : layer)
-    if (e.alive && e.bounds.overlaps(footprint)) rasterize_faces(e.mesh, grid, kept);
-  for (const TriMesh& m : placed) rasterize_faces(m, grid, swatch);
-  // Kept geometry within one cell counts: neighbouring patches register their elements a little
-  // apart, and a cell between a kept element and where the swatch had one is not a hole.
-  std::vector<uint8_t> near_kept = kept;
+// Grows a cell mask by one cell in every direction.
+std::vector<uint8_t> dilated(const std::vector<uint8_t>& cells, const PlaneGrid& grid) {
+  std::vector<uint8_t> out = cells;
   for (int y = 0; y < grid.ny; ++y)
     for (int x = 0; x < grid.nx; ++x) {
-      if (!kept[grid.index(x, y)]) continue;
+      if (!cells[grid.index(x, y)]) continue;
       for (int v = std::max(0, y - 1); v <= std::min(grid.ny - 1, y + 1); ++v)
-        for (int u = std::max(0, x - 1); u <= std::min(grid.nx - 1, x + 1); ++u) near_kept[grid.index(u, v)] = 1;
+        for (int u = std::max(0, x - 1); u <= std::min(grid.nx - 1, x + 1); ++u) out[grid.index(u, v)] = 1;
     }
+  return out;
+}
+
+// Cells whose centre lies inside the footprint, one cell away from its edges inside the domain,
+// and where the placed swatch's geometry is accounted for: every placed input over the cell has
+// its representative (the element it was added as, merged into or yielded to) within a cell of
+// it, and an input that has none (refused as a whole; or every input, when `representative` is
+// empty) at least some kept geometry. So a weft
+// that yielded to an output weft ending short of it leaves its cells uncovered even where warps
+// lie over them, and the driver seeds there again. Cells without swatch geometry are covered.
+std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
+                                   const std::vector<int32_t>& representative, const Rect2& footprint,
+                                   const PlaneGrid& grid, const std::function<bool(const glm::dvec2&)>& inside_domain) {
+  const size_t count = static_cast<size_t>(grid.nx) * grid.ny;
+  std::vector<uint8_t> kept(count, 0), unaccounted(count, 0), covered(count, 0);
+  for (const PlaneElement& e : layer)
+    if (e.alive && e.bounds.overlaps(footprint)) rasterize_faces(e.mesh, grid, kept);
+  // Kept geometry within one cell counts: neighbouring patches register their elements a little
+  // apart, and a cell between a kept element and where the swatch had one is not a hole.
+  const std::vector<uint8_t> near_kept = dilated(kept, grid);
+  for (size_t i = 0; i < placed.size(); ++i) {
+    std::vector<uint8_t> input(count, 0), near_representative;
+    rasterize_faces(placed[i], grid, input);
+    const int32_t r = representative.empty() ? -1 : representative[i];
+    if (r >= 0 && layer[r].alive) {
+      std::vector<uint8_t> own(count, 0);
+      rasterize_faces(layer[r].mesh, grid, own);
+      near_representative = dilated(own, grid);
+    }
+    const std::vector<uint8_t>& accounted = near_representative.empty() ? near_kept : near_representative;
+    for (size_t k = 0; k < count; ++k)
+      if (input[k] && !accounted[k]) unaccounted[k] = 1;
+  }
   // A cell next to the footprint's edge is where the next patch's seam goes, unless the domain
   // ends there.
   const auto settled = [&](const glm::dvec2& p) { return footprint.contains(p) || !inside_domain(p); };
@@ -83,7 +106,7 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
     for (int x = x0; x <= x1; ++x) {
       const glm::dvec2 centre = grid.origin + grid.cell * glm::dvec2(x + 0.5, y + 0.5);
       const size_t k = grid.index(x, y);
-      if (!footprint.contains(centre) || !inside_domain(centre) || !(near_kept[k] || !swatch[k])) continue;
+      if (!footprint.contains(centre) || !inside_domain(centre) || unaccounted[k]) continue;
       const double d = grid.cell;
       if (settled(centre + glm::dvec2(d, 0.0)) && settled(centre - glm::dvec2(d, 0.0)) &&
           settled(centre + glm::dvec2(0.0, d)) && settled(centre - glm::dvec2(0.0, d)))
@@ -92,7 +115,7 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   return covered;
 }
 
-// The overlap: under the footprint, inside the domain, where output geometry already exists
+// The overlap: under the footprint, where output geometry already exists
 // (cells touched by an output face's bounding box). Returns the elements under the footprint.
 std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const Rect2& footprint,
                                   const PlaneGrid& grid, std::vector<uint8_t>& occupied) {
@@ -208,9 +231,11 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   std::vector<uint8_t> occupied;
   const std::vector<int32_t> affected = occupy_cells(layer, footprint, request.grid, occupied);
   const PlaneGrid& grid = request.grid;
+  // The overlap does not end at the domain's edge: where an output element and an input both
+  // hang over it, they must be cut and stitched there too, or the input keeps a stub past the
+  // output's end that no seam can join (the edge cells' occupancy stands for what lies beyond).
   const auto in_overlap = [&](const Vec3& p) {
-    return footprint.contains(p) && request.inside_domain(glm::dvec2(p)) &&
-           occupied[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
+    return footprint.contains(p) && occupied[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
   };
 
   std::vector<TriMesh> outs;
@@ -238,20 +263,21 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   check_cancel();
 
   StageTimer timer(seconds, "merge");
-  // Elements near `mesh` in the layer, but for element `self`.
-  const auto neighbours = [&](const TriMesh& mesh, int32_t self) {
+  // Elements near `mesh` in the layer, but for elements `self` and `also`.
+  const auto neighbours = [&](const TriMesh& mesh, int32_t self, int32_t also) {
     const Rect2 b = xy_bounds(mesh);
     std::vector<const TriMesh*> near;
-    for (size_t k = 0; k < layer.size(); ++k)
-      if (layer[k].alive && static_cast<int32_t>(k) != self && layer[k].bounds.overlaps(b))
-        near.push_back(&layer[k].mesh);
+    for (size_t k = 0; k < layer.size(); ++k) {
+      const auto index = static_cast<int32_t>(k);
+      if (layer[k].alive && index != self && index != also && layer[k].bounds.overlaps(b)) near.push_back(&layer[k].mesh);
+    }
     return near;
   };
   // The collision policy, in the space the output will live in.
   std::vector<Box3> obstacle_bounds;
   for (const TriMesh& m : request.obstacles) obstacle_bounds.push_back(bounding_box(m.positions));
-  const auto collides = [&](const TriMesh& mesh, int32_t self) {
-    const std::vector<const TriMesh*> near = neighbours(mesh, self);
+  const auto collides = [&](const TriMesh& mesh, int32_t self, int32_t also = -1) {
+    const std::vector<const TriMesh*> near = neighbours(mesh, self, also);
     if (!request.to_space) return passes_through(mesh, near);
     const TriMesh placed = request.to_space(mesh);
     std::vector<TriMesh> placed_near;
@@ -282,9 +308,14 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     e.bounds = xy_bounds(e.mesh);
     e.changed = true;
   }
+  // What stands for each input in the layer once merged (see covered_cells); -1: nothing.
+  std::vector<int32_t> representative(inputs.size(), -1);
+  std::vector<uint8_t> out_partnered(outs.size(), 0);
+  for (const ElementRelation* partner : partners) out_partnered[partner->out_element] = 1;
   for (const ElementRelation* partner : partners) {
     check_cancel();
     PlaneElement& target = layer[affected[partner->out_element]];
+    representative[partner->in_element] = affected[partner->out_element];
     const auto restore_shape = [&] {
       std::vector<Vec3>& before = undeformed[partner->out_element];
       if (before.empty()) return;
@@ -304,11 +335,36 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       continue;
     }
     // A merged element that would pass through a neighbour (a seam where two patches'
-    // registrations disagree) is refused: the output element stays as it was.
-    if (collides(replacement, affected[partner->out_element])) {
+    // registrations disagree) is refused: the output element stays as it was. But an input that
+    // bridges two output elements (a yarn placed across the gap between two pieces of one yarn)
+    // meets the second end to end: it joins that one too, by a second merge into it.
+    bool hits = collides(replacement, affected[partner->out_element]);
+    int32_t absorbed = -1;
+    if (hits && merged.outcome == MergeOutcome::stitched) {
+      for (const ElementRelation& other : corr.relations) {
+        if (other.in_element != partner->in_element || out_partnered[other.out_element]) continue;
+        const int32_t second = affected[other.out_element];
+        // Whole elements only: a part would leave the rest of its element behind.
+        if (!layer[second].alive || !layer[second].pinned.empty() || !target.pinned.empty()) continue;
+        MergeResult bridged = merge_elements(layer[second].mesh, replacement, in_overlap, options.merging);
+        if (bridged.outcome != MergeOutcome::stitched ||
+            collides(bridged.element, affected[partner->out_element], second))
+          continue;
+        replacement = std::move(bridged.element);
+        absorbed = second;
+        hits = false;
+        break;
+      }
+    }
+    if (hits) {
       ++counts.refused_merges;
       restore_shape();
       continue;
+    }
+    if (absorbed >= 0) {
+      ++counts.bridged;
+      layer[absorbed].alive = false;
+      layer[absorbed].changed = true;
     }
     if (merged.outcome == MergeOutcome::stitched) {
       ++counts.stitched;
@@ -331,6 +387,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       ++counts.rejected_inputs;
       continue;
     }
+    representative[i] = static_cast<int32_t>(layer.size());
     outcome.added.push_back(static_cast<int32_t>(layer.size()));
     PlaneElement added;
     added.mesh = std::move(inputs[i]);
@@ -339,7 +396,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     added.changed = true;
     layer.push_back(std::move(added));
   }
-  outcome.covered = covered_cells(layer, placed, footprint, grid, request.inside_domain);
+  if (!request.account_per_input) representative.clear();
+  outcome.covered = covered_cells(layer, placed, representative, footprint, grid, request.inside_domain);
   return outcome;
 }
 

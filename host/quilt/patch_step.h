@@ -80,12 +80,18 @@ struct PatchRequest {
   std::vector<glm::dvec2> candidates;        //!< translations of the swatch to choose among
   PlaneGrid grid;                            //!< cells for the overlap's occupancy
   //! Whether a point of the plane lies in the output domain: inputs whose centre lies outside
-  //! are not placed, and the overlap ends there.
+  //! are not placed, and cells whose centre lies outside need no cover.
   std::function<bool(const glm::dvec2&)> inside_domain;
   //! Place only inputs whose every vertex lies inside the domain (a surface patch is a window on
   //! the surface: geometry past its edge has no place to go). Planar quilting lets elements whose
   //! centre is inside hang over the rectangle's edge.
   bool whole_inputs_only = false;
+  //! A cell is covered only where each input over it is accounted for by what stands for it in
+  //! the layer (see PatchOutcome::covered); false: where any kept geometry lies within a cell.
+  //! On a surface, neighbouring patches register their elements less well than on a plane, and
+  //! the strict rule would seed most cells again and again (four times the patches on the
+  //! bunny) to count them as holes in the end.
+  bool account_per_input = true;
   //! Where plane geometry ends up (a surface patch: embedded over the base); the collision
   //! policy tests there, since bending a layer over a curved base can make elements that are
   //! apart in the plane meet. Empty: the plane is the space.
@@ -98,6 +104,7 @@ struct PatchRequest {
 //! Counters of what the merging did, summed over patches.
 struct MergeCounts {
   int stitched = 0;              //!< related pairs cut and stitched into one element
+  int bridged = 0;               //!< stitched inputs joined to a second output element they met end to end
   int replaced = 0;              //!< output elements replaced by an input element (kept_in)
   int kept = 0;                  //!< input elements that yielded to an output element (kept_out)
   int rejected_inputs = 0;       //!< unrelated input elements that would have collided
@@ -113,9 +120,12 @@ struct PatchOutcome {
   std::vector<int32_t> added;             //!< indices of elements appended to the layer
   int inputs = 0;                         //!< swatch elements placed inside the domain
   //! #grid cells: 1 where the patch covered the cell, that is, the cell lies inside the footprint
-  //! shrunk by one cell and kept geometry now lies over it, or the placed swatch itself has no
-  //! geometry there (a sparse swatch is mostly empty by design). A refused merge or a rejected
-  //! input leaves its cells uncovered, so the driver seeds there again.
+  //! shrunk by one cell and every placed input over it is accounted for: what stands for it in
+  //! the layer (the element it was added as, merged into or yielded to; with
+  //! account_per_input false, any kept geometry) lies within a cell of it. Cells where the placed
+  //! swatch has no geometry are covered (a sparse swatch is mostly empty by design). A refused
+  //! merge, a rejected input or an input that yielded to an element ending short of it leaves
+  //! its cells uncovered, so the driver seeds there again.
   std::vector<uint8_t> covered;
   //! Whether the point lies in a covered cell.
   bool covers(const PlaneGrid& grid, const glm::dvec2& p) const;

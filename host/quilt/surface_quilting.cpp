@@ -244,6 +244,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
     }
     request.inside_domain = [&patch](const glm::dvec2& p) { return patch.locate(p).has_value(); };
     request.whole_inputs_only = true;
+    request.account_per_input = false;
     request.obstacles = std::move(obstacles);
     request.to_space = [&](const TriMesh& plane_mesh) {
       TriMesh placed;
@@ -283,6 +284,11 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
           update_bounds(added, base);
           elements.push_back(std::move(added));
           alive.push_back(1);
+          continue;
+        }
+        // An element joined into another one (only whole elements are, never parts) is gone.
+        if (!plane.alive) {
+          alive[parts[l].element] = 0;
           continue;
         }
         // Put the new part back: faces outside the part stay; vertices that did not move keep

@@ -78,46 +78,67 @@ TriMesh make_heightfield(const HeightfieldOptions& o) {
     invalid(m.str());
   }
 
+  if (o.tiles < 1) invalid("--tiles must be >= 1");
+  const int stride_x = W / o.tiles, stride_y = H / o.tiles;
+  if (o.tiles > 1 && (stride_x < 3 || stride_y < 3)) {
+    invalid(std::to_string(o.tiles) + " tiles a side leave fewer than 3 pixels per tile of a " + std::to_string(W) +
+            "x" + std::to_string(H) + " image");
+  }
+
   TriMesh mesh;
-  // Grid column c, grid row g (g = 0 at y = 0, the image's bottom row).
-  auto top = [&](int c, int g) { return static_cast<int32_t>(g * W + c); };
-  for (int g = 0; g < H; ++g) {
-    for (int c = 0; c < W; ++c) mesh.positions.emplace_back(c * spacing, g * spacing, o.height * image.at(c, H - 1 - g));
-  }
-  for (int g = 0; g + 1 < H; ++g) {
-    for (int c = 0; c + 1 < W; ++c) {
-      const int32_t a = top(c, g), b = top(c + 1, g), cc = top(c + 1, g + 1), d = top(c, g + 1);
-      mesh.triangles.push_back({a, b, cc});
-      mesh.triangles.push_back({a, cc, d});
+  // One element over grid columns [c0, c1] x rows [g0, g1] (g = 0 at y = 0, the image's bottom
+  // row): the top grid, and for a closed slab the bottom grid and the walls between them.
+  const auto add_piece = [&](int c0, int c1, int g0, int g1, int32_t element) {
+    const int w = c1 - c0 + 1, h = g1 - g0 + 1;
+    const auto first = static_cast<int32_t>(mesh.positions.size());
+    auto top = [&](int c, int g) { return first + static_cast<int32_t>(g * w + c); };
+    for (int g = 0; g < h; ++g) {
+      for (int c = 0; c < w; ++c)
+        mesh.positions.emplace_back((c0 + c) * spacing, (g0 + g) * spacing, o.height * image.at(c0 + c, H - 1 - (g0 + g)));
     }
-  }
-  if (!o.open) {
-    const auto bottom_base = static_cast<int32_t>(W * H);
-    auto bottom = [&](int c, int g) { return bottom_base + top(c, g); };
-    for (int g = 0; g < H; ++g) {
-      for (int c = 0; c < W; ++c) mesh.positions.emplace_back(c * spacing, g * spacing, -o.base);
-    }
-    for (int g = 0; g + 1 < H; ++g) {
-      for (int c = 0; c + 1 < W; ++c) {
-        const int32_t a = bottom(c, g), b = bottom(c + 1, g), cc = bottom(c + 1, g + 1), d = bottom(c, g + 1);
-        mesh.triangles.push_back({a, cc, b});
-        mesh.triangles.push_back({a, d, cc});
+    for (int g = 0; g + 1 < h; ++g) {
+      for (int c = 0; c + 1 < w; ++c) {
+        const int32_t a = top(c, g), b = top(c + 1, g), cc = top(c + 1, g + 1), d = top(c, g + 1);
+        mesh.triangles.push_back({a, b, cc});
+        mesh.triangles.push_back({a, cc, d});
       }
     }
-    // The rim, counter-clockwise seen from +z; each step becomes an outward wall quad.
-    std::vector<std::pair<int, int>> rim;
-    for (int c = 0; c + 1 < W; ++c) rim.emplace_back(c, 0);
-    for (int g = 0; g + 1 < H; ++g) rim.emplace_back(W - 1, g);
-    for (int c = W - 1; c > 0; --c) rim.emplace_back(c, H - 1);
-    for (int g = H - 1; g > 0; --g) rim.emplace_back(0, g);
-    for (size_t k = 0; k < rim.size(); ++k) {
-      const auto [c0, g0] = rim[k];
-      const auto [c1, g1] = rim[(k + 1) % rim.size()];
-      mesh.triangles.push_back({top(c0, g0), bottom(c0, g0), bottom(c1, g1)});
-      mesh.triangles.push_back({top(c0, g0), bottom(c1, g1), top(c1, g1)});
+    if (!o.open) {
+      const auto bottom_base = static_cast<int32_t>(w * h);
+      auto bottom = [&](int c, int g) { return bottom_base + top(c, g); };
+      for (int g = 0; g < h; ++g) {
+        for (int c = 0; c < w; ++c) mesh.positions.emplace_back((c0 + c) * spacing, (g0 + g) * spacing, -o.base);
+      }
+      for (int g = 0; g + 1 < h; ++g) {
+        for (int c = 0; c + 1 < w; ++c) {
+          const int32_t a = bottom(c, g), b = bottom(c + 1, g), cc = bottom(c + 1, g + 1), d = bottom(c, g + 1);
+          mesh.triangles.push_back({a, cc, b});
+          mesh.triangles.push_back({a, d, cc});
+        }
+      }
+      // The rim, counter-clockwise seen from +z; each step becomes an outward wall quad.
+      std::vector<std::pair<int, int>> rim;
+      for (int c = 0; c + 1 < w; ++c) rim.emplace_back(c, 0);
+      for (int g = 0; g + 1 < h; ++g) rim.emplace_back(w - 1, g);
+      for (int c = w - 1; c > 0; --c) rim.emplace_back(c, h - 1);
+      for (int g = h - 1; g > 0; --g) rim.emplace_back(0, g);
+      for (size_t k = 0; k < rim.size(); ++k) {
+        const auto [x0, y0] = rim[k];
+        const auto [x1, y1] = rim[(k + 1) % rim.size()];
+        mesh.triangles.push_back({top(x0, y0), bottom(x0, y0), bottom(x1, y1)});
+        mesh.triangles.push_back({top(x0, y0), bottom(x1, y1), top(x1, y1)});
+      }
     }
+    mesh.elements.resize(mesh.triangles.size(), element);
+  };
+  if (o.tiles == 1) {
+    add_piece(0, W - 1, 0, H - 1, 0);
+  } else {
+    // Tiles of stride - 1 pixel spacings with one spacing of grout between them.
+    for (int ty = 0; ty < o.tiles; ++ty)
+      for (int tx = 0; tx < o.tiles; ++tx)
+        add_piece(tx * stride_x, (tx + 1) * stride_x - 1, ty * stride_y, (ty + 1) * stride_y - 1, ty * o.tiles + tx);
   }
-  mesh.elements.assign(mesh.triangles.size(), 0);
   return mesh;
 }
 

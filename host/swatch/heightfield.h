@@ -18,6 +18,10 @@ struct HeightfieldOptions {
   double height = 1.0;             //!< relief: z of white minus z of black (black at z = 0)
   double base = 0.5;               //!< slab thickness below black (bottom at z = -base)
   bool open = false;               //!< the top sheet alone (boundary edges by design)
+  //! N x N tiles instead of one piece: each tile its own element over floor(W / N) x floor(H / N)
+  //! pixels, one pixel spacing of grout between neighbours, so the relief quilts like any
+  //! layer of discrete elements (a slab or sheet is one element as large as the swatch).
+  int tiles = 1;
 
   //! A small swatch for tests: built-in relief at 16 x 16 pixels (closed slab: 1,020 faces).
   static HeightfieldOptions small();
@@ -29,13 +33,14 @@ GrayImage builtin_height_image(int resolution);
 //! Averages blocks of pixels so that the longer side has at most `max_side` pixels.
 GrayImage downsample_image(const GrayImage& image, int max_side);
 
-//! Builds the swatch: one element. Closed (default): a slab with top grid (heights), bottom
-//! grid (z = -base) and side walls, a closed genus-0 2-manifold with outward orientation,
-//! 4 (W-1)(H-1) + 4 (W-1 + H-1) faces. Open: the top grid alone, 2 (W-1)(H-1) faces,
-//! counter-clockwise seen from +z.
+//! Builds the swatch: one element, or tiles x tiles of them (element ty * tiles + tx, each over
+//! w x h pixels). Closed (default): a slab with top grid (heights), bottom grid (z = -base) and
+//! side walls, a closed genus-0 2-manifold with outward orientation, 4 (w-1)(h-1) + 4 (w-1 + h-1)
+//! faces per element. Open: the top grid alone, 2 (w-1)(h-1) faces, counter-clockwise seen
+//! from +z.
 //! \throw InputError(invalid_option) for an image smaller than 2 x 2 pixels, non-positive size,
-//!        negative height, non-positive base (closed), or a relief so tall that z would not be
-//!        the thinnest axis.
+//!        negative height, non-positive base (closed), a relief so tall that z would not be
+//!        the thinnest axis, or tiles < 1 or leaving fewer than 3 pixels a tile.
 TriMesh make_heightfield(const HeightfieldOptions& options);
 
 }  // namespace meshquilt
