@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the README's pictures in docs/images/ from the built CLI: small swatches quilted
-# over a 4x4 plane, each rendered oblique with one colour per element. Run after a build;
-# MESHQUILT=path/to/meshquilt picks another executable. Takes a minute or two on two cores.
+# over a 4x4 plane, rendered from the top (the relief tiles oblique) with one colour per element.
+# Run after a build; MESHQUILT=path/to/meshquilt picks another executable. Takes a few minutes on
+# two cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 meshquilt=${MESHQUILT:-build/cli/meshquilt}
@@ -10,19 +11,20 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p docs/images
 
-# picture NAME SWATCH-ARGS...: swatch, quilt over 4x4, render to docs/images/NAME.png.
+# picture NAME VIEW SWATCH-ARGS...: swatch, quilt over 4x4, render to docs/images/NAME.png.
 picture() {
-  local name=$1
-  shift
+  local name=$1 view=$2
+  shift 2
   "$meshquilt" swatch "$@" --preset small -o "$work/$name-swatch.ply" >/dev/null
   "$meshquilt" synth --swatch "$work/$name-swatch.ply" --plane 4x4 --backend cpu --progress none -o "$work/$name.ply" >/dev/null
-  "$meshquilt" render "$work/$name.ply" --view oblique --mode elements --size 800x600 -o "docs/images/$name.png"
+  "$meshquilt" render "$work/$name.ply" --view "$view" --mode elements --size 800x600 -o "docs/images/$name.png"
 }
 
-picture chainmail chainmail
-picture twill weave --pattern twill:2/3
-picture fruit fruit --seed 7
-picture wire wire
+picture chainmail top chainmail
+picture twill top weave --pattern twill:2/3
+picture fruit top fruit --seed 7
+picture wire top wire
+picture heightfield oblique heightfield --tiles 4
 
 # The default curved job: the built-in chain mail over the shipped sphere.
 "$meshquilt" synth --base data/sphere.off --scale 0.2 --backend cpu --progress none -o "$work/sphere.ply" \
