@@ -1,11 +1,14 @@
-// Reproduces the planar rows of Table 1 of the mesh quilting paper with our closest swatches:
-// for each scenario and back end, runs `meshquilt synth` several times in a child process and
-// prints our median seconds, the paper's, their ratio, faces per second, peak memory and the
-// share of time per stage, as a Markdown table.
+// Reproduces rows of Table 1 of the mesh quilting paper with our closest swatches: for each
+// scenario and back end, runs `meshquilt synth` several times in a child process and prints our
+// median seconds, the paper's, their ratio, faces per second, peak memory and the share of time
+// per stage, as a Markdown table. Planar rows size the plane, curved rows the --scale over the
+// base, for about the paper's output faces.
 //
-//   table1_runner [--runs N] [--backends cpu,vulkan] [--scenarios wire,apple] [--scale F]
+//   table1_runner [--runs N] [--backends cpu,vulkan] [--scenarios wire,apple,bunny-weave,bunny-link]
+//                 [--scale F] [--shared DIR]
 //
-// --scale multiplies the plane area (0.1 for a quick look).
+// --scale multiplies the output faces (0.1 for a quick look); --shared is where data/meshes/
+// holds the curved rows' bases (default: ../shared beside the source tree).
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -34,11 +37,14 @@ struct Scenario {
   double paper_seconds;      // Table 1 time
   long paper_faces;          // Table 1 output faces
   std::string swatch_args;   // `meshquilt swatch` arguments of our closest swatch
+  std::string base;          // base mesh under <shared>/data/meshes; empty: a plane
 };
 
 const std::vector<Scenario> kScenarios = {
-    {"wire", "Plane + Wire", 3 * 60.0, 74792, "chainmail --rows 8 --columns 6"},
-    {"apple", "Plane + Apple", 3 * 60.0, 321000, "fruit --columns 5 --rows 5 --subdivisions 2"},
+    {"wire", "Plane + Wire", 3 * 60.0, 74792, "chainmail --rows 8 --columns 6", ""},
+    {"apple", "Plane + Apple", 3 * 60.0, 321000, "fruit --columns 5 --rows 5 --subdivisions 2", ""},
+    {"bunny-weave", "Bunny + Weave", 86 * 60.0, 700815, "weave", "bunny.off"},
+    {"bunny-link", "Bunny + Link", 80 * 60.0, 940622, "chainmail --rows 8 --columns 6", "bunny.off"},
 };
 
 struct Run {
@@ -80,13 +86,15 @@ int main(int argc, char** argv) {
   int runs = 3;
   double scale = 1.0;
   std::vector<std::string> backends = {"cpu", "vulkan"};
-  std::vector<std::string> scenarios = {"wire", "apple"};
+  std::vector<std::string> scenarios = {"wire", "apple", "bunny-weave", "bunny-link"};
+  std::filesystem::path shared = std::filesystem::path(MESHQUILT_SOURCE_DIR) / ".." / "shared";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--runs") runs = std::max(1, std::stoi(value));
     else if (flag == "--backends") backends = meshquilt::perf::split(value, ',');
     else if (flag == "--scenarios") scenarios = meshquilt::perf::split(value, ',');
     else if (flag == "--scale") scale = std::stod(value);
+    else if (flag == "--shared") shared = value;
     else {
       std::fprintf(stderr, "table1_runner: unknown option %s\n", flag.c_str());
       return 2;
@@ -108,23 +116,47 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "table1_runner: making the %s swatch failed\n", sc.key.c_str());
       return 1;
     }
-    // Plane size for about the paper's output size: faces grow with area.
+    // The domain: a plane sized, or a base at a --scale, for about the paper's output size
+    // (faces grow with the area, or with 1 / scale^2), from a probe run.
+    std::vector<std::string> domain;
+    const auto base = shared / "data" / "meshes" / sc.base;
+    if (!sc.base.empty() && !std::filesystem::exists(base)) {
+      std::fprintf(stderr, "table1_runner: %s not found (--shared DIR); skipping %s\n", base.c_str(), sc.key.c_str());
+      continue;
+    }
+    const double probe_scale = 0.2;
+    char size[64];
+    if (sc.base.empty()) {
+      domain = {"--plane", "1x1"};
+    } else {
+      std::snprintf(size, sizeof size, "%.2f", probe_scale);
+      domain = {"--base", base.string(), "--scale", size};
+    }
     const auto probe = work / "probe.json";
-    spawn({cli, "synth", "--swatch", swatch.string(), "--plane", "1x1", "--backend", "cpu", "--progress", "none",
-           "--stats", probe.string(), "-o", (work / "probe.ply").string()}, nullptr);
+    std::vector<std::string> probe_run = {cli, "synth", "--swatch", swatch.string(), "--backend", "cpu", "--progress",
+                                          "none", "--stats", probe.string(), "-o", (work / "probe.ply").string()};
+    probe_run.insert(probe_run.end(), domain.begin(), domain.end());
+    spawn(probe_run, nullptr);
     const long probe_faces = nlohmann::json::parse(std::ifstream(probe))["faces"].get<long>();
-    const double side = std::sqrt(scale * sc.paper_faces / std::max(1L, probe_faces));
-    char plane[64];
-    std::snprintf(plane, sizeof plane, "%.2fx%.2f", side, side);
+    const double growth = std::sqrt(scale * sc.paper_faces / std::max(1L, probe_faces));
+    if (sc.base.empty()) {
+      std::snprintf(size, sizeof size, "%.2fx%.2f", growth, growth);
+      domain = {"--plane", size};
+    } else {
+      std::snprintf(size, sizeof size, "%.4f", probe_scale / growth);
+      domain = {"--base", base.string(), "--scale", size};
+    }
+    const std::string label = sc.paper_row + (sc.base.empty() ? " (" : " (--scale ") + size + ")";
 
     for (const std::string& backend : backends) {
       std::vector<Run> results;
       for (int r = 0; r < runs; ++r) {
         const auto stats = work / "stats.json";
         Run run;
-        const int code = spawn({cli, "synth", "--swatch", swatch.string(), "--plane", plane, "--backend", backend,
-                                "--progress", "none", "--stats", stats.string(), "-o", (work / "out.ply").string()},
-                               &run.peak_kib);
+        std::vector<std::string> synth = {cli, "synth", "--swatch", swatch.string(), "--backend", backend, "--progress",
+                                          "none", "--stats", stats.string(), "-o", (work / "out.ply").string()};
+        synth.insert(synth.end(), domain.begin(), domain.end());
+        const int code = spawn(synth, &run.peak_kib);
         if (code != 0) {
           std::fprintf(stderr, "table1_runner: %s on %s failed (exit %d)\n", sc.key.c_str(), backend.c_str(), code);
           return 1;
@@ -153,7 +185,7 @@ int main(int argc, char** argv) {
                       100.0 * shares[k].first / std::max(1e-9, stage_total));
         main_stages += part;
       }
-      std::printf("| %s (%s) | %s | %ld | %.1f | %.0f | %.3f | %.0f | %.0f | %s |\n", sc.paper_row.c_str(), plane,
+      std::printf("| %s | %s | %ld | %.1f | %.0f | %.3f | %.0f | %.0f | %s |\n", label.c_str(),
                   backend.c_str(), results.front().faces, t, sc.paper_seconds, t / sc.paper_seconds,
                   results.front().faces / t, median(peaks) / 1024.0, main_stages.c_str());
       std::fflush(stdout);
