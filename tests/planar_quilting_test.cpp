@@ -27,7 +27,9 @@ namespace {
 struct Quality {
   int elements = 0;
   int closed = 0;
-  double longest = 0.0;            // largest x-y bbox side of an element / swatch's longer side
+  double swatch_side = 0.0;        // the swatch's longer x-y side
+  std::vector<double> lengths;     // each element's longer x-y bbox side / swatch_side
+  double longest = 0.0;            // the largest of lengths
   double intersecting_share = 0.0; // distinct faces in a pair of different elements / faces
   double coverage = 0.0;
 };
@@ -47,7 +49,7 @@ Quality measure(const TriMesh& result, const TriMesh& swatch) {
     lo = glm::min(lo, glm::dvec2(p));
     hi = glm::max(hi, glm::dvec2(p));
   }
-  const double swatch_side = std::max(hi.x - lo.x, hi.y - lo.y);
+  q.swatch_side = std::max(hi.x - lo.x, hi.y - lo.y);
   std::map<int32_t, std::pair<glm::dvec2, glm::dvec2>> boxes;
   for (size_t f = 0; f < result.num_faces(); ++f) {
     auto [it, fresh] = boxes.try_emplace(result.elements[f], glm::dvec2(1e300), glm::dvec2(-1e300));
@@ -56,8 +58,10 @@ Quality measure(const TriMesh& result, const TriMesh& swatch) {
       it->second.second = glm::max(it->second.second, glm::dvec2(result.positions[v]));
     }
   }
-  for (const auto& [e, box] : boxes)
-    q.longest = std::max(q.longest, std::max(box.second.x - box.first.x, box.second.y - box.first.y) / swatch_side);
+  for (const auto& [e, box] : boxes) {
+    q.lengths.push_back(std::max(box.second.x - box.first.x, box.second.y - box.first.y) / q.swatch_side);
+    q.longest = std::max(q.longest, q.lengths.back());
+  }
 
 
   const TriMesh welded = weld_vertices(result);
@@ -128,12 +132,6 @@ TEST(PlanarQuilting, TwillCoversThePlaneInEachYarnDirection) {
   EXPECT_EQ(q.closed, q.elements);
   EXPECT_EQ(q.intersecting_share, 0.0);
   ASSERT_EQ(result.sources.size(), result.num_faces());
-  glm::dvec2 lo(1e300), hi(-1e300);
-  for (const Vec3& p : swatch.positions) {
-    lo = glm::min(lo, glm::dvec2(p));
-    hi = glm::max(hi, glm::dvec2(p));
-  }
-  const double swatch_length = std::max(hi.x - lo.x, hi.y - lo.y);
   PlaneCoverageOptions no_margin;
   no_margin.margin = 0.0;
   const auto is_warp = [](int32_t source, int32_t n) { return source < n; };
@@ -141,7 +139,7 @@ TEST(PlanarQuilting, TwillCoversThePlaneInEachYarnDirection) {
   for (const auto& [name, keep] : {std::pair{"warps", +is_warp}, std::pair{"wefts", +is_weft}}) {
     const TriMesh swatch_part = faces_where(swatch, swatch.elements, keep, warps);
     const TriMesh part = faces_where(result, result.sources, keep, warps);
-    const double cell = self_covering_cell(swatch_part, swatch_length);
+    const double cell = self_covering_cell(swatch_part, q.swatch_side);
     const double coverage = plane_coverage(plane_body(part), cell, no_margin).coverage;
     std::printf("twill %s: coverage %.4f on cells of %.3f\n", name, coverage, cell);
     // The aim is 0.99 in each direction; measured: warps 0.987, wefts 0.969 (a few weft
@@ -164,23 +162,7 @@ TEST(PlanarQuilting, SparseWiresContinueAcrossThePlane) {
   EXPECT_EQ(q.intersecting_share, 0.0);
   EXPECT_GE(q.coverage, 0.98);
   EXPECT_LE(q.elements, 1.25 * 8 * n);
-  // Median wire length in swatch lengths, from the output's own element ids.
-  glm::dvec2 lo(1e300), hi(-1e300);
-  for (const Vec3& p : swatch.positions) {
-    lo = glm::min(lo, glm::dvec2(p));
-    hi = glm::max(hi, glm::dvec2(p));
-  }
-  const double swatch_side = std::max(hi.x - lo.x, hi.y - lo.y);
-  std::map<int32_t, std::pair<glm::dvec2, glm::dvec2>> boxes;
-  for (size_t f = 0; f < result.num_faces(); ++f)
-    for (int32_t v : result.triangles[f]) {
-      auto [it, fresh] = boxes.try_emplace(result.elements[f], glm::dvec2(1e300), glm::dvec2(-1e300));
-      it->second.first = glm::min(it->second.first, glm::dvec2(result.positions[v]));
-      it->second.second = glm::max(it->second.second, glm::dvec2(result.positions[v]));
-    }
-  std::vector<double> lengths;
-  for (const auto& [e, box] : boxes)
-    lengths.push_back(std::max(box.second.x - box.first.x, box.second.y - box.first.y) / swatch_side);
+  std::vector<double> lengths = q.lengths;
   std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
   const double median_length = lengths[lengths.size() / 2];
   std::printf("sparse wire: %d wires (n = %d), median %.2f swatch lengths, %d bridged\n", q.elements, n, median_length,
