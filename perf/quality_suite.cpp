@@ -14,9 +14,6 @@
 // holes, the longest output element in swatch lengths (its longer x-y side over the swatch's),
 // stitched pairs and synth's seconds. Bar: coverage >= 0.98, closed >= 0.98, intersecting
 // <= 0.1%, dropped <= 1%; open sheets (height field) have no closed bar.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -32,6 +29,9 @@
 
 #include "inspect/coverage.h"
 #include "mesh/mesh_io.h"
+#include <unistd.h>
+
+#include "run_child.h"
 #include "split_list.h"
 
 namespace {
@@ -56,23 +56,6 @@ const std::vector<Kind> kKinds = {
     {"heightfield-tiles", "heightfield --tiles 4", false, true},
     {"heightfield-open", "heightfield --open", false, false},
 };
-
-// Runs argv in a child with stdout to `out` (or /dev/null); returns the exit status.
-int spawn(const std::vector<std::string>& argv, const std::string& out = "/dev/null") {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) dup2(fd, STDOUT_FILENO);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execv(args[0], args.data());
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 // Longer x-y side of each element's bounding box (elements by the mesh's per-face ids).
 std::vector<double> element_lengths(const meshquilt::TriMesh& m) {
@@ -134,18 +117,18 @@ int main(int argc, char** argv) {
       std::vector<std::string> make = {cli, "swatch"};
       for (const auto& a : meshquilt::perf::split(kind.swatch_args, ' ')) make.push_back(a);
       make.insert(make.end(), {"--preset", "small", "--seed", seed, "-o", swatch.string()});
-      if (spawn(make) != 0) {
+      if (meshquilt::perf::run_child(make) != 0) {
         std::fprintf(stderr, "quality_suite: making the %s swatch failed\n", name.c_str());
         return 1;
       }
-      const int code = spawn({cli, "synth", "--swatch", swatch.string(), "--plane", plane, "--seed", seed, "--backend",
+      const int code = meshquilt::perf::run_child({cli, "synth", "--swatch", swatch.string(), "--plane", plane, "--seed", seed, "--backend",
                               "cpu", "--progress", "none", "--stats", stats.string(), "-o", out.string()});
       if (code != 0) {
         std::printf("| %s | %s | synth failed (exit %d) | | | | | | | | | | | yes |\n", kind.key.c_str(), seed.c_str(), code);
         ++misses;
         continue;
       }
-      if (spawn({cli, "inspect", out.string(), "--plane", "--swatch", swatch.string(), "--json"}, report.string()) != 0) {
+      if (meshquilt::perf::run_child({cli, "inspect", out.string(), "--plane", "--swatch", swatch.string(), "--json"}, report.string()) != 0) {
         std::fprintf(stderr, "quality_suite: inspecting %s failed\n", name.c_str());
         return 1;
       }

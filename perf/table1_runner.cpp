@@ -9,10 +9,6 @@
 //
 // --scale multiplies the output faces (0.1 for a quick look); --shared is where data/meshes/
 // holds the curved rows' bases (default: ../shared beside the source tree).
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +21,9 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include "run_child.h"
 #include "split_list.h"
 
 #include <nlohmann/json.hpp>
@@ -53,26 +52,6 @@ struct Run {
   long peak_kib = 0;
   std::map<std::string, double> stages;
 };
-
-// Runs argv in a child; returns its exit status and peak resident memory (KiB).
-int spawn(const std::vector<std::string>& argv, long* peak_kib) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    // The child's own report lines would interleave with the table.
-    const int null = open("/dev/null", O_WRONLY);
-    if (null >= 0) dup2(null, STDOUT_FILENO);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execv(args[0], args.data());
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  if (peak_kib) *peak_kib = usage.ru_maxrss;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -112,7 +91,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> make = {cli, "swatch"};
     for (const auto& a : meshquilt::perf::split(sc.swatch_args, ' ')) make.push_back(a);
     make.insert(make.end(), {"-o", swatch.string()});
-    if (spawn(make, nullptr) != 0) {
+    if (meshquilt::perf::run_child(make) != 0) {
       std::fprintf(stderr, "table1_runner: making the %s swatch failed\n", sc.key.c_str());
       return 1;
     }
@@ -136,7 +115,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> probe_run = {cli, "synth", "--swatch", swatch.string(), "--backend", "cpu", "--progress",
                                           "none", "--stats", probe.string(), "-o", (work / "probe.ply").string()};
     probe_run.insert(probe_run.end(), domain.begin(), domain.end());
-    spawn(probe_run, nullptr);
+    meshquilt::perf::run_child(probe_run);
     const long probe_faces = nlohmann::json::parse(std::ifstream(probe))["faces"].get<long>();
     const double growth = std::sqrt(scale * sc.paper_faces / std::max(1L, probe_faces));
     if (sc.base.empty()) {
@@ -156,7 +135,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> synth = {cli, "synth", "--swatch", swatch.string(), "--backend", backend, "--progress",
                                           "none", "--stats", stats.string(), "-o", (work / "out.ply").string()};
         synth.insert(synth.end(), domain.begin(), domain.end());
-        const int code = spawn(synth, &run.peak_kib);
+        const int code = meshquilt::perf::run_child(synth, "/dev/null", &run.peak_kib);
         if (code != 0) {
           std::fprintf(stderr, "table1_runner: %s on %s failed (exit %d)\n", sc.key.c_str(), backend.c_str(), code);
           return 1;

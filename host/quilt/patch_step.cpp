@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <unordered_set>
 
 #include <glm/geometric.hpp>
@@ -84,16 +85,22 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   // Kept geometry within one cell counts: neighbouring patches register their elements a little
   // apart, and a cell between a kept element and where the swatch had one is not a hole.
   const std::vector<uint8_t> near_kept = dilated(kept, grid);
+  // The inputs grouped by what must account for them (-1: any kept geometry), one raster each.
+  std::map<int32_t, std::vector<uint8_t>> inputs_of;
   for (size_t i = 0; i < placed.size(); ++i) {
-    std::vector<uint8_t> input(count, 0), near_representative;
-    rasterize_faces(placed[i], grid, input);
-    const int32_t r = representative.empty() ? -1 : representative[i];
-    if (r >= 0 && layer[r].alive) {
+    int32_t r = representative.empty() ? -1 : representative[i];
+    if (r >= 0 && !layer[r].alive) r = -1;
+    auto [it, fresh] = inputs_of.try_emplace(r, count, 0);
+    rasterize_faces(placed[i], grid, it->second);
+  }
+  for (const auto& [r, input] : inputs_of) {
+    std::vector<uint8_t> near_representative;
+    if (r >= 0) {
       std::vector<uint8_t> own(count, 0);
       rasterize_faces(layer[r].mesh, grid, own);
       near_representative = dilated(own, grid);
     }
-    const std::vector<uint8_t>& accounted = near_representative.empty() ? near_kept : near_representative;
+    const std::vector<uint8_t>& accounted = r >= 0 ? near_representative : near_kept;
     for (size_t k = 0; k < count; ++k)
       if (input[k] && !accounted[k]) unaccounted[k] = 1;
   }
