@@ -136,6 +136,36 @@ TEST_F(StepFixture, RefusedInputLeavesItsCellsUncovered) {
   EXPECT_TRUE(outcome.covers(grid, {6.0, 5.6}));
 }
 
+// Over a curved base the plane is a chart: elements apart in it can meet in space (a patch that
+// wraps around a thin part, normals converging over a concave one). Here the chart folds at
+// x = 9, so a plate at x = 11 in the plane stands where the middle yarn goes in space (x = 6).
+TEST_F(StepFixture, ElementsApartInThePlaneThatMeetInSpaceAreRefused) {
+  const Rect2 domain{glm::dvec2(0.0), glm::dvec2(16.0)};
+  std::vector<PlaneElement> layer(1);
+  TriMesh& plate = layer[0].mesh;
+  plate.positions = {{10.95, 5.0, 0.0}, {11.05, 5.0, 0.0}, {11.05, 6.2, 0.0}, {10.95, 6.2, 0.0},
+                     {10.95, 5.0, 0.4}, {11.05, 5.0, 0.4}, {11.05, 6.2, 0.4}, {10.95, 6.2, 0.4}};
+  plate.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                     {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  layer[0].bounds = xy_bounds(plate);
+  PatchRequest request = request_at({4.0, 4.0}, domain);
+  request.to_space = [](const TriMesh& mesh) {
+    TriMesh folded = mesh;
+    for (Vec3& p : folded.positions)
+      if (p.x > 9.0) p.x = 17.0 - p.x;
+    return folded;
+  };
+  const PatchOutcome outcome = run(layer, request);
+  EXPECT_EQ(counts.rejected_inputs, 1);
+  EXPECT_EQ(outcome.added.size(), 2u);
+  // Without the fold nothing is in the way.
+  std::vector<PlaneElement> flat_layer{layer[0]};
+  counts = {};
+  request.to_space = [](const TriMesh& mesh) { return mesh; };
+  EXPECT_EQ(run(flat_layer, request).added.size(), 3u);
+  EXPECT_EQ(counts.rejected_inputs, 0);
+}
+
 // A yarn four swatch lengths long takes part through its part in the window x >= 1: the vertices
 // joining that part to the rest are pinned. The step stitches the swatch's yarn onto its end; the
 // part goes back by the pinned vertices' exact positions and the whole yarn is one closed tube.

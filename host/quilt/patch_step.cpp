@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <unordered_set>
 
 #include <glm/geometric.hpp>
@@ -280,22 +281,40 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     }
     return near;
   };
+  // Layer elements in the space the output will live in, placed once per shape (`forget` when a
+  // shape changes). Over a curved base, elements apart in the plane can meet in space (where
+  // normals converge over a concave part, or where a patch wraps around a thin part), so
+  // neighbours there are found by their boxes in space, not in the plane.
+  std::vector<std::optional<std::pair<TriMesh, Box3>>> in_space;
+  const auto placed_layer = [&](size_t k) -> const std::pair<TriMesh, Box3>& {
+    if (in_space.size() < layer.size()) in_space.resize(layer.size());
+    if (!in_space[k]) {
+      TriMesh placed = request.to_space(layer[k].mesh);
+      const Box3 box = bounding_box(placed.positions);
+      in_space[k].emplace(std::move(placed), box);
+    }
+    return *in_space[k];
+  };
+  const auto forget = [&](size_t k) {
+    if (k < in_space.size()) in_space[k].reset();
+  };
   // The collision policy, in the space the output will live in.
   std::vector<Box3> obstacle_bounds;
   for (const TriMesh& m : request.obstacles) obstacle_bounds.push_back(bounding_box(m.positions));
   const auto collides = [&](const TriMesh& mesh, int32_t self, int32_t also = -1) {
-    const std::vector<const TriMesh*> near = neighbours(mesh, self, also);
-    if (!request.to_space) return passes_through(mesh, near);
+    if (!request.to_space) return passes_through(mesh, neighbours(mesh, self, also));
     const TriMesh placed = request.to_space(mesh);
-    std::vector<TriMesh> placed_near;
-    placed_near.reserve(near.size());
-    for (const TriMesh* m : near) placed_near.push_back(request.to_space(*m));
-    std::vector<const TriMesh*> pointers;
-    for (const TriMesh& m : placed_near) pointers.push_back(&m);
     const Box3 box = bounding_box(placed.positions);
+    std::vector<const TriMesh*> near;
+    for (size_t k = 0; k < layer.size(); ++k) {
+      const auto index = static_cast<int32_t>(k);
+      if (!layer[k].alive || index == self || index == also) continue;
+      const auto& [other, other_box] = placed_layer(k);
+      if (other_box.overlaps(box)) near.push_back(&other);
+    }
     for (size_t k = 0; k < request.obstacles.size(); ++k)
-      if (obstacle_bounds[k].overlaps(box)) pointers.push_back(&request.obstacles[k]);
-    return passes_through(placed, pointers);
+      if (obstacle_bounds[k].overlaps(box)) near.push_back(&request.obstacles[k]);
+    return passes_through(placed, near);
   };
   // A deformation that pushes an output element into a neighbour is undone: the element keeps
   // its shape and the merge works from there.
@@ -312,6 +331,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       continue;
     }
     e.mesh = std::move(outs[o]);
+    forget(affected[o]);
     e.bounds = xy_bounds(e.mesh);
     e.changed = true;
   }
@@ -327,6 +347,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       std::vector<Vec3>& before = undeformed[partner->out_element];
       if (before.empty()) return;
       target.mesh.positions = std::move(before);
+      forget(affected[partner->out_element]);
       target.bounds = xy_bounds(target.mesh);
     };
     MergeResult merged = merge_elements(target.mesh, inputs[partner->in_element], in_overlap, options.merging);
@@ -380,6 +401,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       target.source = input_source[partner->in_element];
     }
     target.mesh = std::move(replacement);
+    forget(affected[partner->out_element]);
     target.bounds = xy_bounds(target.mesh);
     target.changed = true;
   }

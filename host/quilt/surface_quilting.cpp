@@ -156,13 +156,21 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
     std::vector<TriMesh> obstacles;
     {
       StageTimer timer(seconds, "layer");
-      const Vec3 centre = base.position(seed);
-      const double reach = full_radius * shrink + shell;
+      // Whatever can touch geometry placed over the patch: elements whose base points come within
+      // two shell heights of the patch's faces (both may stand up to a shell height off the base).
+      // The patch's faces reach a ring of faces past its radius, so its box, not the radius, decides.
+      Box3 reach;
+      for (int32_t f : patch.faces)
+        for (int32_t v : base.mesh.triangles[f]) {
+          reach.lo = glm::min(reach.lo, base.mesh.positions[v]);
+          reach.hi = glm::max(reach.hi, base.mesh.positions[v]);
+        }
+      reach.lo -= Vec3(2.0 * shell);
+      reach.hi += Vec3(2.0 * shell);
       for (size_t e = 0; e < elements.size(); ++e) {
         if (!alive[e]) continue;
         const SurfaceElement& element = elements[e];
-        const Vec3 nearest = glm::clamp(centre, element.bounds.lo, element.bounds.hi);
-        if (glm::distance(nearest, centre) > reach) continue;
+        if (!element.bounds.overlaps(reach)) continue;
         std::vector<uint8_t> vertex_in(element.vertices.size());
         for (size_t v = 0; v < element.vertices.size(); ++v)
           vertex_in[v] = patch.face_index(element.vertices[v].point.face) >= 0;
