@@ -41,6 +41,18 @@ TriMesh three_yarns() {
   return swatch;
 }
 
+// A thin plate standing from y = 5 to 6.2 at x, 0.4 high: an element of no swatch.
+PlaneElement plate_at(double x) {
+  PlaneElement plate;
+  const double a = x - 0.05, b = x + 0.05;
+  plate.mesh.positions = {{a, 5.0, 0.0}, {b, 5.0, 0.0}, {b, 6.2, 0.0}, {a, 6.2, 0.0},
+                          {a, 5.0, 0.4}, {b, 5.0, 0.4}, {b, 6.2, 0.4}, {a, 6.2, 0.4}};
+  plate.mesh.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                          {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  plate.bounds = xy_bounds(plate.mesh);
+  return plate;
+}
+
 struct StepFixture : ::testing::Test {
   void SetUp() override {
     swatch = prepare_swatch(three_yarns());
@@ -119,13 +131,7 @@ TEST_F(StepFixture, RefusedInputLeavesItsCellsUncovered) {
   const Rect2 domain{glm::dvec2(0.0), glm::dvec2(16.0)};
   // A plate standing across where the middle yarn will go (x = 6, y = 5.6), clear of the others
   // (y = 4.1 and 7.1), unrelated to all.
-  std::vector<PlaneElement> layer(1);
-  TriMesh& plate = layer[0].mesh;
-  plate.positions = {{5.95, 5.0, 0.0}, {6.05, 5.0, 0.0}, {6.05, 6.2, 0.0}, {5.95, 6.2, 0.0},
-                     {5.95, 5.0, 0.4}, {6.05, 5.0, 0.4}, {6.05, 6.2, 0.4}, {5.95, 6.2, 0.4}};
-  plate.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                     {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  layer[0].bounds = xy_bounds(plate);
+  std::vector<PlaneElement> layer{plate_at(6.0)};
   const PatchOutcome outcome = run(layer, request_at({4.0, 4.0}, domain));
   EXPECT_EQ(counts.rejected_inputs, 1);
   EXPECT_EQ(outcome.added.size(), 2u);
@@ -141,13 +147,7 @@ TEST_F(StepFixture, RefusedInputLeavesItsCellsUncovered) {
 // x = 9, so a plate at x = 11 in the plane stands where the middle yarn goes in space (x = 6).
 TEST_F(StepFixture, ElementsApartInThePlaneThatMeetInSpaceAreRefused) {
   const Rect2 domain{glm::dvec2(0.0), glm::dvec2(16.0)};
-  std::vector<PlaneElement> layer(1);
-  TriMesh& plate = layer[0].mesh;
-  plate.positions = {{10.95, 5.0, 0.0}, {11.05, 5.0, 0.0}, {11.05, 6.2, 0.0}, {10.95, 6.2, 0.0},
-                     {10.95, 5.0, 0.4}, {11.05, 5.0, 0.4}, {11.05, 6.2, 0.4}, {10.95, 6.2, 0.4}};
-  plate.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                     {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  layer[0].bounds = xy_bounds(plate);
+  std::vector<PlaneElement> layer{plate_at(11.0)};
   PatchRequest request = request_at({4.0, 4.0}, domain);
   request.to_space = [](const TriMesh& mesh) {
     TriMesh folded = mesh;

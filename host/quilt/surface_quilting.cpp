@@ -159,12 +159,9 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
       // Whatever can touch geometry placed over the patch: elements whose base points come within
       // two shell heights of the patch's faces (both may stand up to a shell height off the base).
       // The patch's faces reach a ring of faces past its radius, so its box, not the radius, decides.
-      Box3 reach;
-      for (int32_t f : patch.faces)
-        for (int32_t v : base.mesh.triangles[f]) {
-          reach.lo = glm::min(reach.lo, base.mesh.positions[v]);
-          reach.hi = glm::max(reach.hi, base.mesh.positions[v]);
-        }
+      std::vector<Vec3> patch_points;
+      for (int32_t v : patch.vertices) patch_points.push_back(base.mesh.positions[v]);
+      Box3 reach = bounding_box(patch_points);
       reach.lo -= Vec3(2.0 * shell);
       reach.hi += Vec3(2.0 * shell);
       for (size_t e = 0; e < elements.size(); ++e) {
