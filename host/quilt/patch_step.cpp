@@ -287,7 +287,6 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   // neighbours there are found by their boxes in space, not in the plane.
   std::vector<std::optional<std::pair<TriMesh, Box3>>> in_space;
   const auto placed_layer = [&](size_t k) -> const std::pair<TriMesh, Box3>& {
-    if (in_space.size() < layer.size()) in_space.resize(layer.size());
     if (!in_space[k]) {
       TriMesh placed = request.to_space(layer[k].mesh);
       const Box3 box = bounding_box(placed.positions);
@@ -305,6 +304,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     if (!request.to_space) return passes_through(mesh, neighbours(mesh, self, also));
     const TriMesh placed = request.to_space(mesh);
     const Box3 box = bounding_box(placed.positions);
+    // Grown before any pointer into it is taken (the layer grows between calls, not during one).
+    in_space.resize(layer.size());
     std::vector<const TriMesh*> near;
     for (size_t k = 0; k < layer.size(); ++k) {
       const auto index = static_cast<int32_t>(k);
