@@ -9,6 +9,7 @@
 #include <mutex>
 #include <random>
 #include <thread>
+#include <tuple>
 
 #include "mesh/mesh_io.h"
 #include "spatial/face_bvh.h"
@@ -79,6 +80,21 @@ TEST(ClosestPointOnTriangle, ExactCases) {
   const ClosestPoint edge = closest_point_on_triangle({0.5, -1.0, 0.0}, a, b, c);
   EXPECT_DOUBLE_EQ(edge.distance, 1.0);
   EXPECT_DOUBLE_EQ(edge.barycentric.y, 0.5);
+}
+
+// A repeated vertex leaves an edge of zero length: the distance is still that to the segment.
+TEST(ClosestPointOnTriangle, RepeatedVertexGivesTheSegmentDistance) {
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 a(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+    const Vec3 p(2 * u(rng), 2 * u(rng), 2 * u(rng));
+    for (const auto& [x, y, z] : {std::tuple{a, a, c}, std::tuple{a, c, c}, std::tuple{c, a, c}, std::tuple{a, a, a}}) {
+      const ClosestPoint cp = closest_point_on_triangle(p, x, y, z);
+      ASSERT_TRUE(std::isfinite(cp.distance));
+      EXPECT_NEAR(cp.distance, reference_distance(p, x, y, z), 1e-12);
+    }
+  }
 }
 
 class RealMesh : public ::testing::TestWithParam<const char*> {};

@@ -1,5 +1,6 @@
 // Geometry matching (Section 2.4, Eq. 1-3): the host's exact cost against a brute force written
-// here, recovery of a known placement, and the same choice on both back ends.
+// here, recovery of a known placement, the pruned search against the full one, and the same
+// choice on both back ends.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 
 #include "device.h"
 #include "error.h"
+#include "mesh/measures.h"
 #include "quilt/geometry_matching.h"
+#include "swatch/chainmail.h"
 
 namespace meshquilt {
 namespace {
@@ -120,6 +123,76 @@ TEST(GeometryMatching, FindsTheTranslationTheOutputWasCopiedWith) {
     EXPECT_NEAR(m.cost, matcher.exact_cost(points, normals, m.translation), 1e-9);
     EXPECT_GE(m.rescored, 1);
   }
+}
+
+// The output around a seed as the step sees it: pieces of the swatch copied at several offsets
+// (seams between earlier patches), jittered, some points lifted off the swatch.
+// With one piece, a periodic swatch matches equally well at many candidates.
+void layered_points(const TriMesh& swatch, std::mt19937_64& rng, bool one_piece, std::vector<Vec3>* points,
+                    std::vector<Vec3>* normals) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 0.03);
+  glm::dvec2 offsets[3] = {glm::dvec2(0.31 * u(rng), 0.27 * u(rng)), glm::dvec2(0.9 * u(rng), 0.4 * u(rng)),
+                           glm::dvec2(0.2 * u(rng), 0.8 * u(rng))};
+  if (one_piece) offsets[1] = offsets[2] = offsets[0];
+  for (int piece = 0; piece < 3; ++piece) {
+    std::vector<Vec3> p, n;
+    copied_points(swatch, offsets[piece], &p, &n);
+    for (size_t k = 0; k < p.size(); ++k) {
+      // Pieces split the sub-patch into vertical bands.
+      if (static_cast<int>((p[k].x - 2.0) / 4.0 * 3.0) != piece) continue;
+      Vec3 q = p[k] + Vec3(noise(rng), noise(rng), noise(rng));
+      if (k % 13 == 0) q.z += 1.5;  // far from any face: the exact cost falls back to the BVH
+      points->push_back(q);
+      normals->push_back(glm::normalize(n[k] + Vec3(noise(rng), noise(rng), noise(rng))));
+    }
+  }
+}
+
+// The reference of the pruned search is the same rule with every candidate evaluated exactly:
+// both must choose the same translation, cost and random draw, while the pruned one evaluates
+// fewer candidates.
+void expect_pruning_changes_nothing(const TriMesh& swatch, double cell, int trials, uint64_t seed) {
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  MatchingOptions options;
+  options.lambda = 1.0 / mean_edge_length(swatch);  // as the drivers set it
+  MatchingOptions full = options;
+  full.prune = false;
+  const GeometryMatcher pruned(*device, swatch, cell, options), reference(*device, swatch, cell, full);
+  std::mt19937_64 rng(seed);
+  int fewer = 0, near = 0;
+  for (int trial = 0; trial < trials; ++trial) {
+    std::vector<Vec3> points, normals;
+    layered_points(swatch, rng, trial % 2 == 1, &points, &normals);
+    ASSERT_GT(points.size(), 20u);
+    const std::vector<glm::dvec2> candidates = grid_candidates(cell);
+    std::mt19937_64 a(trial), b(trial);
+    const MatchResult x = pruned.match(points, normals, candidates, a);
+    const MatchResult y = reference.match(points, normals, candidates, b);
+    EXPECT_EQ(x.translation, y.translation) << "trial " << trial;
+    EXPECT_EQ(x.cost, y.cost) << "trial " << trial;
+    EXPECT_EQ(a(), b()) << "trial " << trial;
+    EXPECT_EQ(x.near, y.near) << "trial " << trial;
+    near += x.near;
+    EXPECT_EQ(y.rescored, static_cast<int>(candidates.size()));
+    if (x.rescored < y.rescored) ++fewer;
+  }
+  EXPECT_GT(fewer, trials / 2);
+  EXPECT_GT(near, trials) << "the near sets were single candidates: the test would not see a lost one";
+}
+
+TEST(GeometryMatching, PrunedSearchChoosesWhatTheFullSearchChoosesOnRandomSwatches) {
+  std::mt19937_64 rng(17);
+  expect_pruning_changes_nothing(random_swatch(rng, 80), 0.25, 12, 3);
+}
+
+TEST(GeometryMatching, PrunedSearchChoosesWhatTheFullSearchChoosesOnChainMail) {
+  // A periodic swatch: many candidates cost nearly the same, so ties and near-ties are tested.
+  ChainmailOptions options = ChainmailOptions::small();
+  options.rows = 4;
+  options.columns = 6;
+  const TriMesh swatch = make_chainmail(options);
+  expect_pruning_changes_nothing(swatch, 0.3, 5, 4);
 }
 
 TEST(GeometryMatching, EmptySubPatchTakesASeededRandomCandidate) {

@@ -1,5 +1,6 @@
-// The matching_cost kernel (Eq. 1-3) on both back ends against an independent brute-force
-// reference in double: every face, distance by projection onto the plane or the nearest edge.
+// The matching_cost kernel (a lower bound of Eq. 1-3) on both back ends against an independent
+// brute-force reference in double: every face, distance by projection onto the plane or the
+// nearest edge. The bound must never exceed the reference, and must equal it near the swatch.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -20,6 +21,8 @@
 #include "device.h"
 #include "error.h"
 #include "matching_cost.h"
+#include "mesh/tri_mesh.h"
+#include "spatial/near_face_grid.h"
 
 namespace meshquilt {
 namespace {
@@ -27,8 +30,7 @@ namespace {
 using engine::Backend;
 using glm::dvec3;
 
-// Per point: |device - reference| <= kTolerance * max(1, |reference|). D >= 1 always, so this is
-// a relative tolerance of 1e-5 on float32 minima.
+// Per pair: float32 against double, relative (D >= 1 always).
 constexpr double kTolerance = 1e-5;
 
 bool ci() {
@@ -68,17 +70,27 @@ double triangle_distance(dvec3 p, dvec3 a, dvec3 b, dvec3 c) {
   return inside ? std::abs(glm::dot(p - a, n)) / std::sqrt(n2) : edges;
 }
 
+// Fills in the face normals as geometry matching uses them: unit, (0, 0, 1) for a zero area.
+void set_normals(MatchingSwatch& swatch) {
+  swatch.normals.clear();
+  for (const auto& t : swatch.triangles) {
+    const dvec3 a(swatch.positions[t[0]]), b(swatch.positions[t[1]]), c(swatch.positions[t[2]]);
+    const dvec3 cross = glm::cross(b - a, c - a);
+    const double length = glm::length(cross);
+    swatch.normals.emplace_back(length > 0.0 ? cross / length : dvec3(0.0, 0.0, 1.0));
+  }
+}
+
 struct Reference {
   const MatchingSwatch& swatch;
 
   double point_cost(dvec3 q, dvec3 normal) const {
     double best = INFINITY;
-    for (const auto& t : swatch.triangles) {
+    for (std::size_t f = 0; f < swatch.triangles.size(); ++f) {
+      const auto& t = swatch.triangles[f];
       const dvec3 a(swatch.positions[t[0]]), b(swatch.positions[t[1]]), c(swatch.positions[t[2]]);
-      const dvec3 cross = glm::cross(b - a, c - a);
-      const double length = glm::length(cross);
-      const dvec3 face_normal = length > 0.0 ? cross / length : dvec3(0.0);
-      const double d = (1.0 + swatch.lambda * triangle_distance(q, a, b, c)) * (1.0 + glm::length(normal - face_normal));
+      const double d = (1.0 + swatch.lambda * triangle_distance(q, a, b, c)) *
+                       (1.0 + glm::length(normal - dvec3(swatch.normals[f])));
       best = std::min(best, d);
     }
     return best;
@@ -94,6 +106,16 @@ struct Reference {
     return costs;
   }
 };
+
+// The grid over the swatch's own (float) vertices, with the proportions geometry matching uses
+// for a voxel edge `voxel`.
+NearFaceGrid grid_for(const MatchingSwatch& swatch, double voxel) {
+  TriMesh mesh;
+  for (const glm::vec3& p : swatch.positions) mesh.positions.emplace_back(p);
+  for (const auto& t : swatch.triangles)
+    mesh.triangles.push_back({static_cast<int32_t>(t[0]), static_cast<int32_t>(t[1]), static_cast<int32_t>(t[2])});
+  return build_near_face_grid(mesh, voxel, 1.3 * voxel, 2.0 * voxel, 4.0 * voxel, 128);
+}
 
 // ---- inputs -----------------------------------------------------------------------------
 
@@ -127,7 +149,6 @@ MatchingSwatch random_swatch(std::mt19937& rng, int faces) {
     swatch.positions.insert(swatch.positions.end(), {a, b, c});
     swatch.triangles.push_back({base, base + 1, base + 2});
   }
-  swatch.cell_size = 0.25f;
   swatch.lambda = 1.0f;
   return swatch;
 }
@@ -160,7 +181,7 @@ MatchingSwatch torus_swatch(int around, int tube) {
       swatch.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
       swatch.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
     }
-  swatch.cell_size = 2.6f / 16.0f;
+  swatch.lambda = 10.0f;  // about 1 / mean edge, as the drivers set it
   return swatch;
 }
 
@@ -185,7 +206,8 @@ MatchingSwatch read_off(const std::filesystem::path& path) {
 }
 
 // Output-like points: swatch vertices displaced a little, with their jittered vertex normals.
-Query points_near(const MatchingSwatch& swatch, std::mt19937& rng, int points, const std::vector<glm::vec2>& shifts) {
+Query points_near(const MatchingSwatch& swatch, std::mt19937& rng, int points, const std::vector<glm::vec2>& shifts,
+                  float spread) {
   std::vector<glm::vec3> normals(swatch.positions.size(), glm::vec3(0.0f));
   for (const auto& t : swatch.triangles) {
     const glm::vec3 n = glm::cross(swatch.positions[t[1]] - swatch.positions[t[0]],
@@ -193,28 +215,32 @@ Query points_near(const MatchingSwatch& swatch, std::mt19937& rng, int points, c
     for (std::uint32_t v : t) normals[v] += n;
   }
   std::uniform_int_distribution<std::size_t> pick(0, swatch.positions.size() - 1);
-  std::normal_distribution<float> jitter(0.0f, 0.02f);
+  std::normal_distribution<float> jitter(0.0f, spread);
   Query query;
   for (int i = 0; i < points; ++i) {
     const std::size_t v = pick(rng);
     query.points.push_back(swatch.positions[v] + glm::vec3(jitter(rng), jitter(rng), jitter(rng)));
-    const glm::vec3 n = normals[v] + glm::vec3(jitter(rng), jitter(rng), jitter(rng)) * glm::length(normals[v]);
+    const glm::vec3 n = normals[v] + glm::vec3(jitter(rng), jitter(rng), jitter(rng)) * (0.02f / spread) * glm::length(normals[v]);
     query.normals.push_back(glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0, 0, 1));
   }
   query.translations = shifts;
   return query;
 }
 
-void expect_close(const std::vector<float>& actual, const std::vector<double>& expected, const char* what) {
-  ASSERT_EQ(actual.size(), expected.size()) << what;
-  std::size_t failures = 0;
-  for (std::size_t k = 0; k < actual.size(); ++k) {
-    const double error = std::abs(actual[k] - expected[k]);
-    if (!(error <= kTolerance * std::max(1.0, std::abs(expected[k])))) {
-      if (++failures <= 5) ADD_FAILURE() << what << " pair " << k << ": " << actual[k] << " vs " << expected[k];
+// Every pair's bound is at most the reference (within float rounding), every candidate's score
+// at most the reference sum; returns the share of pairs where the bound equals the reference.
+double check_bound(const std::vector<float>& bounds, const std::vector<double>& expected, const char* what) {
+  EXPECT_EQ(bounds.size(), expected.size()) << what;
+  std::size_t above = 0, equal = 0;
+  for (std::size_t k = 0; k < std::min(bounds.size(), expected.size()); ++k) {
+    const double tolerance = kTolerance * expected[k];
+    if (!(bounds[k] <= expected[k] + tolerance)) {
+      if (++above <= 5) ADD_FAILURE() << what << " pair " << k << ": bound " << bounds[k] << " above " << expected[k];
     }
+    if (std::abs(bounds[k] - expected[k]) <= tolerance) ++equal;
   }
-  EXPECT_EQ(failures, 0u) << what;
+  EXPECT_EQ(above, 0u) << what;
+  return expected.empty() ? 1.0 : static_cast<double>(equal) / expected.size();
 }
 
 // ---- the tests, one body per back end ---------------------------------------------------
@@ -236,18 +262,26 @@ class MatchingCostTest : public ::testing::TestWithParam<Backend> {
     }
   }
 
-  void check_against_reference(const MatchingSwatch& swatch, const Query& query, const char* what) {
-    MatchingCost cost(*device_, swatch);
-    const std::vector<float> minima = cost.point_costs(query.points, query.normals, query.translations);
+  // Checks bounds and scores against the reference; returns the share of exact pairs.
+  double check_against_reference(const MatchingSwatch& swatch, double voxel, const Query& query, const char* what) {
+    MatchingCost cost(*device_, swatch, grid_for(swatch, voxel));
+    const std::vector<float> bounds = cost.point_costs(query.points, query.normals, query.translations);
     const std::vector<double> expected = Reference{swatch}.point_costs(query.points, query.normals, query.translations);
-    expect_close(minima, expected, what);
+    const double exact_share = check_bound(bounds, expected, what);
     const std::vector<double> scores = cost.score(query.points, query.normals, query.translations);
-    ASSERT_EQ(scores.size(), query.translations.size());
-    for (std::size_t c = 0; c < scores.size(); ++c) {
-      double sum = 0.0;
-      for (std::size_t i = 0; i < query.points.size(); ++i) sum += expected[c * query.points.size() + i];
-      EXPECT_NEAR(scores[c], sum, kTolerance * sum) << what << " candidate " << c;
+    EXPECT_EQ(scores.size(), query.translations.size());
+    for (std::size_t c = 0; c < std::min(scores.size(), query.translations.size()); ++c) {
+      double sum = 0.0, bound_sum = 0.0;
+      for (std::size_t i = 0; i < query.points.size(); ++i) {
+        sum += expected[c * query.points.size() + i];
+        bound_sum += bounds[c * query.points.size() + i];
+      }
+      // Held in double, with no tolerance: the host prunes on it.
+      EXPECT_LE(scores[c], sum) << what << " candidate " << c;
+      // The margin for float rounding is small: the bound still prunes.
+      EXPECT_GE(scores[c], 0.99 * bound_sum) << what << " candidate " << c;
     }
+    return exact_share;
   }
 
   static std::map<Backend, std::unique_ptr<engine::Device>>& devices() {
@@ -258,13 +292,17 @@ class MatchingCostTest : public ::testing::TestWithParam<Backend> {
   engine::Device* device_ = nullptr;
 };
 
+// One triangle, every query inside the grid and the face always listed: the bound is Eq. 2.
 TEST_P(MatchingCostTest, ClosedFormSingleTriangle) {
   MatchingSwatch swatch;
   swatch.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   swatch.triangles = {{0, 1, 2}};
-  swatch.cell_size = 0.1f;
   swatch.lambda = 2.0f;
-  MatchingCost cost(*device_, swatch);
+  set_normals(swatch);
+  TriMesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.triangles = {{0, 1, 2}};
+  MatchingCost cost(*device_, swatch, build_near_face_grid(mesh, 0.25, 3.0, 10.0, 10.0));
   const std::vector<glm::vec3> points = {{0.25f, 0.25f, 0.5f}, {0.25f, 0.25f, 0.5f}, {2.0f, 2.0f, 0.0f},
                                          {1.25f, 1.25f, 0.5f}};
   const std::vector<glm::vec3> normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {1, 0, 0}};
@@ -283,76 +321,78 @@ TEST_P(MatchingCostTest, ClosedFormSingleTriangle) {
   for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(minima[k], expected[k], 1e-6 * expected[k]) << k;
 }
 
-TEST_P(MatchingCostTest, RandomTrianglesMatchBruteForce) {
+// Outside the grid the bound is the distance to the faces' box.
+TEST_P(MatchingCostTest, OutsideTheGridTheBoxBounds) {
+  std::mt19937 rng(4);
+  MatchingSwatch swatch = random_swatch(rng, 50);
+  set_normals(swatch);
+  MatchingCost cost(*device_, swatch, grid_for(swatch, 0.2));
+  // Every face lies in [0, 4.3] x [0, 3.3] x [-0.3, 0.7]; (10, 1, 0.2) is at least 5.7 away.
+  const std::vector<float> bound = cost.point_costs({{10.0f, 1.0f, 0.2f}}, {{0, 0, 1}}, {{0, 0}});
+  ASSERT_EQ(bound.size(), 1u);
+  EXPECT_GE(bound[0], 1.0f + 5.7f);
+  EXPECT_LE(bound[0], Reference{swatch}.point_cost({10.0, 1.0, 0.2}, {0, 0, 1}) * (1.0 + kTolerance));
+}
+
+TEST_P(MatchingCostTest, RandomTrianglesStayBelowBruteForce) {
   for (unsigned seed : {1u, 2u, 3u}) {
     std::mt19937 rng(seed);
-    const MatchingSwatch swatch = random_swatch(rng, 150 + 50 * static_cast<int>(seed));
+    MatchingSwatch swatch = random_swatch(rng, 150 + 50 * static_cast<int>(seed));
+    set_normals(swatch);
     const Query query = random_query(rng, 200, 14);
-    check_against_reference(swatch, query, ("seed " + std::to_string(seed)).c_str());
+    check_against_reference(swatch, 0.1, query, ("seed " + std::to_string(seed)).c_str());
   }
 }
 
-TEST_P(MatchingCostTest, WeightAndCellSizeDoNotChangeTheMinimum) {
+TEST_P(MatchingCostTest, AnyWeightOrVoxelGivesABound) {
   std::mt19937 rng(11);
   MatchingSwatch swatch = random_swatch(rng, 120);
+  set_normals(swatch);
   const Query query = random_query(rng, 80, 6);
   for (float lambda : {0.0f, 0.3f, 5.0f})
-    for (float cell : {0.05f, 0.7f, 10.0f}) {
+    for (double voxel : {0.05, 0.7, 10.0}) {
       swatch.lambda = lambda;
-      swatch.cell_size = cell;
-      check_against_reference(swatch, query, ("lambda " + std::to_string(lambda) + " cell " + std::to_string(cell)).c_str());
+      check_against_reference(swatch, voxel, query,
+                              ("lambda " + std::to_string(lambda) + " voxel " + std::to_string(voxel)).c_str());
     }
 }
 
-TEST_P(MatchingCostTest, TorusMatchesBruteForce) {
+// Output-like points near a swatch: the lists decide nearly every pair, so the bound is Eq. 2.
+TEST_P(MatchingCostTest, TorusNearTheSurfaceIsExact) {
   std::mt19937 rng(5);
-  const MatchingSwatch swatch = torus_swatch(40, 16);
+  MatchingSwatch swatch = torus_swatch(40, 16);
+  set_normals(swatch);
   std::vector<glm::vec2> shifts;
-  for (int i = -2; i <= 2; ++i) shifts.emplace_back(i * swatch.cell_size, -i * 0.5f * swatch.cell_size);
-  check_against_reference(swatch, points_near(swatch, rng, 300, shifts), "torus");
+  for (int i = -2; i <= 2; ++i) shifts.emplace_back(i * 0.04f, -i * 0.02f);
+  const double exact = check_against_reference(swatch, 0.075, points_near(swatch, rng, 300, shifts, 0.02f), "torus");
+  EXPECT_GT(exact, 0.95);
 }
 
-TEST_P(MatchingCostTest, FlattenedBunnyMatchesBruteForce) {
+TEST_P(MatchingCostTest, FlattenedBunnyNearTheSurfaceIsExact) {
   const std::filesystem::path file = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/bunny.off";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
   MatchingSwatch swatch = read_off(file);
   ASSERT_GT(swatch.triangles.size(), 1000u) << file;
-  // Swatch frame: flatten to a slab, thinnest axis along z, and take 1/16 of the shorter side.
-  glm::vec3 low(INFINITY), high(-INFINITY);
-  for (glm::vec3& p : swatch.positions) {
-    p = glm::vec3(p.x, p.y, 0.15f * p.z);
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
-  swatch.cell_size = std::min(high.x - low.x, high.y - low.y) / 16.0f;
+  // Swatch frame: flatten to a slab, thinnest axis along z.
+  double edges = 0.0;
+  for (glm::vec3& p : swatch.positions) p = glm::vec3(p.x, p.y, 0.15f * p.z);
+  for (const auto& t : swatch.triangles) edges += glm::length(swatch.positions[t[1]] - swatch.positions[t[0]]);
+  const double mean_edge = edges / swatch.triangles.size();
+  swatch.lambda = static_cast<float>(1.0 / mean_edge);
+  set_normals(swatch);
   std::vector<glm::vec2> shifts;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 2; ++j) shifts.emplace_back(i * swatch.cell_size, j * swatch.cell_size);
+    for (int j = 0; j < 2; ++j) shifts.emplace_back(i * 0.1f * mean_edge, j * 0.1f * mean_edge);
   std::mt19937 rng(9);
-  check_against_reference(swatch, points_near(swatch, rng, 150, shifts), "bunny");
-}
-
-// With lambda = 0 nothing bounds the search and a fine grid makes it longer than llvmpipe's
-// loop limit: the device must leave those pairs to the host, and the results stay exact.
-TEST_P(MatchingCostTest, SearchesPastTheLoopLimitAreFinishedOnTheHost) {
-  std::mt19937 rng(31);
-  MatchingSwatch swatch = random_swatch(rng, 400);
-  swatch.lambda = 0.0f;
-  swatch.cell_size = 0.025f;
-  const Query query = random_query(rng, 16, 2);
-  MatchingCost cost(*device_, swatch);
-  const std::vector<float> minima = cost.point_costs(query.points, query.normals, query.translations);
-  if (device_->max_loop_iterations() > 0) {
-    EXPECT_GT(cost.last_host_fallback_count(), 0u);
-  } else {
-    EXPECT_EQ(cost.last_host_fallback_count(), 0u);
-  }
-  expect_close(minima, Reference{swatch}.point_costs(query.points, query.normals, query.translations), "loop limit");
+  const double exact = check_against_reference(swatch, 0.75 * mean_edge, points_near(swatch, rng, 150, shifts, static_cast<float>(0.15 * mean_edge)), "bunny");
+  EXPECT_GT(exact, 0.9);
 }
 
 TEST_P(MatchingCostTest, EmptyInputs) {
   std::mt19937 rng(3);
-  MatchingCost cost(*device_, random_swatch(rng, 20));
+  MatchingSwatch swatch = random_swatch(rng, 20);
+  set_normals(swatch);
+  MatchingCost cost(*device_, swatch, grid_for(swatch, 0.25));
   const std::vector<glm::vec3> none;
   const std::vector<glm::vec2> shifts = {{0, 0}, {1, 0}, {0, 1}};
   EXPECT_EQ(cost.score(none, none, shifts), std::vector<double>(3, 0.0));
@@ -365,58 +405,53 @@ TEST_P(MatchingCostTest, EmptyInputs) {
 TEST_P(MatchingCostTest, RejectsBadInput) {
   MatchingSwatch swatch;
   swatch.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  swatch.cell_size = 0.5f;
-  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);  // no faces
-  swatch.triangles = {{0, 1, 3}};
-  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);  // index out of range
   swatch.triangles = {{0, 1, 2}};
-  for (float cell : {0.0f, -1.0f, NAN, INFINITY}) {
-    swatch.cell_size = cell;
-    EXPECT_THROW(MatchingCost(*device_, swatch), InputError) << cell;
-  }
-  swatch.cell_size = 0.5f;
+  set_normals(swatch);
+  const NearFaceGrid grid = grid_for(swatch, 0.25);
+  swatch.triangles.clear();
+  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);  // no faces
+  swatch.triangles = {{0, 1, 3}};
+  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);  // index out of range
+  swatch.triangles = {{0, 1, 2}};
+  swatch.normals.clear();
+  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);  // normals do not match faces
+  set_normals(swatch);
   swatch.lambda = -1.0f;
-  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);
+  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);
   swatch.lambda = 1.0f;
   swatch.positions[1].x = NAN;
-  EXPECT_THROW(MatchingCost(*device_, swatch), InputError);
+  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);
   swatch.positions[1].x = 1.0f;
-  MatchingCost cost(*device_, swatch);
+  NearFaceGrid broken = grid;
+  broken.faces.push_back(7);
+  EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);  // lists a face the swatch lacks
+  broken = grid;
+  broken.start.pop_back();
+  EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);
+  MatchingCost cost(*device_, swatch, grid);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, NAN, 0}}, {{0, 0, 1}}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, INFINITY}}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{NAN, 0}}), InputError);
-  // A cell far smaller than the swatch is coarsened, not refused.
-  swatch.cell_size = 1e-6f;
-  MatchingCost fine(*device_, swatch);
-  EXPECT_LE(static_cast<long long>(fine.grid_nx()) * fine.grid_ny(), 1LL << 22);
-  EXPECT_NEAR(fine.score({{0.2f, 0.2f, 1.0f}}, {{0, 0, 1}}, {{0, 0}})[0], 2.0, 1e-5);
+  EXPECT_NEAR(cost.score({{0.2f, 0.2f, 1.0f}}, {{0, 0, 1}}, {{0, 0}})[0], 2.0, 1e-4);
 }
 
-TEST_P(MatchingCostTest, BatchingAndMappingDoNotChangeResults) {
+TEST_P(MatchingCostTest, BatchingDoesNotChangeResults) {
   std::mt19937 rng(21);
-  const MatchingSwatch swatch = random_swatch(rng, 200);
+  MatchingSwatch swatch = random_swatch(rng, 200);
+  set_normals(swatch);
+  const NearFaceGrid grid = grid_for(swatch, 0.1);
   const Query query = random_query(rng, 100, 8);  // 10 candidates, 1000 pairs
-  MatchingCost whole(*device_, swatch);
+  MatchingCost whole(*device_, swatch, grid);
   const std::vector<float> reference = whole.point_costs(query.points, query.normals, query.translations);
   EXPECT_EQ(whole.last_dispatch_count(), 1u);
-  struct Case {
-    MatchingCostOptions options;
-    std::size_t dispatches;
-  };
-  const std::vector<Case> cases = {
-      {{MatchingCostMapping::per_pair, 250}, 5},   // 2 candidates x 100 points per dispatch
-      {{MatchingCostMapping::per_pair, 37}, 30},   // 37 points, 1 candidate: 3 chunks x 10
-      {{MatchingCostMapping::per_point, 0}, 1},
-      {{MatchingCostMapping::per_point, 300}, 4},  // 3 candidates per dispatch
-      {{MatchingCostMapping::per_point, 64}, 20},  // 64 points: 2 chunks x 10
-  };
-  for (const Case& c : cases) {
-    MatchingCost batched(*device_, swatch, c.options);
-    EXPECT_EQ(batched.point_costs(query.points, query.normals, query.translations), reference)
-        << "max pairs " << c.options.max_pairs_per_dispatch;
-    EXPECT_EQ(batched.last_dispatch_count(), c.dispatches) << "max pairs " << c.options.max_pairs_per_dispatch;
-    // Scoring twice is deterministic.
+  for (const auto& [max_pairs, dispatches] : std::vector<std::pair<std::size_t, std::size_t>>{
+           {250, 5},   // 2 candidates x 100 points per dispatch
+           {37, 30}})  // 37 points, 1 candidate: 3 chunks x 10
+  {
+    MatchingCost batched(*device_, swatch, grid, {max_pairs});
+    EXPECT_EQ(batched.point_costs(query.points, query.normals, query.translations), reference) << max_pairs;
+    EXPECT_EQ(batched.last_dispatch_count(), dispatches) << max_pairs;
     EXPECT_EQ(batched.score(query.points, query.normals, query.translations),
               whole.score(query.points, query.normals, query.translations));
   }
@@ -435,10 +470,12 @@ TEST(MatchingCostParity, VulkanAgreesWithCpuTwin) {
   }
   auto cpu = engine::open_device(engine::BackendChoice::cpu);
   std::mt19937 rng(77);
-  const MatchingSwatch swatch = random_swatch(rng, 400);
+  MatchingSwatch swatch = random_swatch(rng, 400);
+  set_normals(swatch);
+  const NearFaceGrid grid = grid_for(swatch, 0.1);
   const Query query = random_query(rng, 500, 30);
-  const std::vector<float> a = MatchingCost(*vulkan, swatch).point_costs(query.points, query.normals, query.translations);
-  const std::vector<float> b = MatchingCost(*cpu, swatch).point_costs(query.points, query.normals, query.translations);
+  const std::vector<float> a = MatchingCost(*vulkan, swatch, grid).point_costs(query.points, query.normals, query.translations);
+  const std::vector<float> b = MatchingCost(*cpu, swatch, grid).point_costs(query.points, query.normals, query.translations);
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k)
     ASSERT_LE(std::abs(a[k] - b[k]), kTolerance * std::max(1.0f, std::abs(b[k]))) << k << ": " << a[k] << " vs " << b[k];

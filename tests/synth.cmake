@@ -5,5 +5,5 @@ meshquilt_test(planar_quilting_test NEEDS_CLI SOURCES planar_quilting_test.cpp
   LIBS meshquilt_quilt meshquilt_inspect meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_engine
   LABELS slow)
 meshquilt_test(geometry_matching_test SOURCES geometry_matching_test.cpp
-  LIBS meshquilt_quilt meshquilt_spatial meshquilt_mesh meshquilt_kernels meshquilt_engine)
+  LIBS meshquilt_quilt meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_kernels meshquilt_engine)
 meshquilt_test(planar_golden_test NEEDS_CLI SOURCES planar_golden_test.cpp LABELS end_to_end)

@@ -12,6 +12,7 @@
 
 #include "device.h"
 #include "matching_cost.h"
+#include "mesh/measures.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {
@@ -34,6 +35,12 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
     face_normals_.push_back(len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0));
   }
   bvh_ = std::make_unique<FaceBvh>(swatch_);
+  // Voxels of 3/4 of a mean edge listing the faces within 1.5 mean edges past the voxel's
+  // diagonal: with the drivers' lambda = 1 / mean edge, the cap 1 + lambda * reach then exceeds what most
+  // points cost even where the normals disagree, so the bound equals Eq. 2 for most pairs and
+  // the host rarely needs the BVH. A point 3 mean edges from the swatch costs at least 4.
+  const double mean_edge = std::max(mean_edge_length(swatch), 1e-12);
+  grid_ = build_near_face_grid(swatch, 0.75 * mean_edge, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, 128);
 
   MatchingSwatch device_swatch;
   device_swatch.positions.reserve(swatch.num_vertices());
@@ -42,32 +49,65 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   for (const Tri& t : swatch.triangles)
     device_swatch.triangles.push_back({static_cast<uint32_t>(t[0]), static_cast<uint32_t>(t[1]),
                                        static_cast<uint32_t>(t[2])});
-  device_swatch.cell_size = static_cast<float>(cell_size);
+  for (const Vec3& n : face_normals_) device_swatch.normals.emplace_back(n);
   device_swatch.lambda = static_cast<float>(options.lambda);
-  kernel_ = std::make_unique<MatchingCost>(device, device_swatch);
+  kernel_ = std::make_unique<MatchingCost>(device, device_swatch, grid_);
 }
 
 GeometryMatcher::~GeometryMatcher() = default;
 
+double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal) const {
+  const double lambda = options_.lambda;
+  const auto cost = [&](const ClosestPoint& cp) {
+    return (1.0 + lambda * cp.distance) * (1.0 + glm::length(normal - face_normals_[cp.face]));
+  };
+  const int64_t voxel = grid_.voxel_of(q);
+  if (voxel >= 0) {
+    double best = std::numeric_limits<double>::infinity();
+    for (uint32_t k = grid_.start[voxel]; k < grid_.start[voxel + 1]; ++k) {
+      // Entries come nearest first: once one cannot beat the best, none after it can.
+      if (1.0 + lambda * grid_.near[k] >= best) break;
+      const Tri& t = swatch_.triangles[grid_.faces[k]];
+      ClosestPoint cp = closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]);
+      cp.face = static_cast<int32_t>(grid_.faces[k]);
+      best = std::min(best, cost(cp));
+    }
+    // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
+    if (best <= 1.0 + lambda * grid_.reach[voxel]) return best;
+  }
+  double best = std::numeric_limits<double>::infinity();
+  // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
+  bvh_->min_cost_face(q, cost, [&](double d) { return (d - 1.0) / lambda; }, &best);
+  return best;
+}
+
+Vec3 GeometryMatcher::closest_point(const Vec3& q) const {
+  const int64_t voxel = grid_.voxel_of(q);
+  if (voxel >= 0) {
+    ClosestPoint best;
+    for (uint32_t k = grid_.start[voxel]; k < grid_.start[voxel + 1]; ++k) {
+      if (grid_.near[k] > best.distance) break;  // nor can any entry after it
+      const auto f = static_cast<int32_t>(grid_.faces[k]);
+      const Tri& t = swatch_.triangles[f];
+      const ClosestPoint cp = closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]);
+      if (cp.distance < best.distance || (cp.distance == best.distance && f < best.face)) {
+        best = cp;
+        best.face = f;
+      }
+    }
+    // Strictly nearer than any unlisted face, so no tie with one of them can change the answer.
+    if (best.distance < grid_.reach[voxel]) return best.point;
+  }
+  return bvh_->closest_point(q).point;
+}
+
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const glm::dvec2& translation) const {
-  const double lambda = options_.lambda;
   const Vec3 shift(translation.x, translation.y, 0.0);
   // Per-point minima in parallel, summed in point order so the total is the same on every run.
   std::vector<double> costs(points.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      const Vec3& n = normals[i];
-      double best = std::numeric_limits<double>::infinity();
-      bvh_->min_cost_face(
-          points[i] - shift,
-          [&](const ClosestPoint& cp) {
-            return (1.0 + lambda * cp.distance) * (1.0 + glm::length(n - face_normals_[cp.face]));
-          },
-          // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
-          [&](double d) { return (d - 1.0) / lambda; }, &best);
-      costs[i] = best;
-    }
+    for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i]);
   });
   double total = 0.0;
   for (double c : costs) total += c;
@@ -106,7 +146,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     glm::dvec2 shift(0.0);
     for (const Vec3& p : points) {
       const Vec3 q = p - Vec3(t, 0.0);
-      shift += glm::dvec2(q - bvh_->closest_point(q).point);
+      shift += glm::dvec2(q - closest_point(q));
     }
     shift /= static_cast<double>(points.size());
     const glm::dvec2 moved = t + shift;
@@ -131,17 +171,30 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::vector<glm::vec3> fpoints(points.begin(), points.end());
   std::vector<glm::vec3> fnormals(normals.begin(), normals.end());
   std::vector<glm::vec2> ftranslations(candidates.begin(), candidates.end());
-  const std::vector<double> proposed = kernel_->score(fpoints, fnormals, ftranslations);
+  const std::vector<double> bounds = kernel_->score(fpoints, fnormals, ftranslations);
   result.scored = static_cast<int>(candidates.size());
 
-  // The kernel proposes: every candidate within the margin of its best is re-scored exactly.
-  const double kernel_best = *std::min_element(proposed.begin(), proposed.end());
-  std::vector<std::pair<size_t, double>> exact;
-  for (size_t c = 0; c < candidates.size(); ++c) {
-    if (proposed[c] <= kernel_best * (1.0 + options_.rescore_margin) + 1e-9)
-      exact.emplace_back(c, exact_cost(points, normals, candidates[c]));
+  // Exact costs in the order of the bounds, until no candidate left can be within the margin
+  // of the best: its bound, and so its cost, exceeds the threshold, which only falls as better
+  // candidates are found. Without pruning every candidate is evaluated.
+  std::vector<size_t> order(candidates.size());
+  for (size_t c = 0; c < order.size(); ++c) order[c] = c;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return bounds[a] < bounds[b]; });
+  const auto threshold = [&](double best) { return best * (1.0 + options_.rescore_margin) + 1e-9; };
+  std::vector<std::pair<size_t, double>> evaluated;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t c : order) {
+    if (options_.prune && bounds[c] > threshold(best)) break;
+    const double cost = exact_cost(points, normals, candidates[c]);
+    evaluated.emplace_back(c, cost);
+    best = std::min(best, cost);
   }
-  result.rescored = static_cast<int>(exact.size());
+  result.rescored = static_cast<int>(evaluated.size());
+  std::sort(evaluated.begin(), evaluated.end());
+  std::vector<std::pair<size_t, double>> exact;  // the near set, in candidate order
+  for (const auto& [c, cost] : evaluated)
+    if (cost <= threshold(best)) exact.emplace_back(c, cost);
+  result.near = static_cast<int>(exact.size());
 
   // Grid-unit translations sample a periodic swatch's equally good placements unevenly: one
   // falls near a lattice position, the next one mid-cell. So every local minimum (over the
@@ -163,11 +216,11 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   for (const auto& [cost, c] : minima) refined.push_back(refine(points, normals, candidates[c], cost));
 
   // The host decides: a seeded random pick among the near-best, as image quilting does.
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& r : refined) best = std::min(best, r.second);
+  double best_refined = std::numeric_limits<double>::infinity();
+  for (const auto& r : refined) best_refined = std::min(best_refined, r.second);
   std::vector<size_t> near_best;
   for (size_t k = 0; k < refined.size(); ++k)
-    if (refined[k].second <= best * (1.0 + options_.choose_tolerance)) near_best.push_back(k);
+    if (refined[k].second <= best_refined * (1.0 + options_.choose_tolerance)) near_best.push_back(k);
   const auto& [t, cost] = refined[near_best[draw_index(rng, near_best.size())]];
   result.translation = t;
   result.cost = cost;

@@ -2,10 +2,18 @@
 //! Geometry matching (Section 2.4 of the mesh quilting paper, Eq. 1-3): choose where to place the
 //! swatch so that it agrees best with the output already synthesized around the seed.
 //!
-//! The device kernel `matching_cost` scores every grid-unit candidate in float32 (it proposes);
-//! the host re-scores the candidates near the best exactly in double with Embree (it decides), so
-//! the Vulkan and CPU back ends make the same choice. The choice is refined continuously in x-y
-//! because a periodic swatch's period is rarely a whole number of cells.
+//! Every decision is made on the exact Eq. 3 in double, so the Vulkan and CPU back ends choose
+//! alike. The rule: the candidates whose exact cost is within `rescore_margin` of the best are
+//! the near set; its local minima (over the candidate grid's 8-neighbourhood), best first, are
+//! refined continuously in x-y (a periodic swatch's period is rarely a whole number of cells);
+//! a seeded pick among the refined costs within `choose_tolerance` of the best decides.
+//!
+//! The device kernel `matching_cost` gives a lower bound of Eq. 3 for every candidate with one
+//! voxel fetch per (candidate, point) pair; the host evaluates candidates exactly in the order
+//! of their bounds and stops once a bound exceeds the near set's threshold. Every candidate of
+//! the near set is therefore evaluated, and the choice equals that of evaluating every
+//! candidate exactly (`prune = false`, the reference). Exact costs use the same nearest-face
+//! lists, falling back to the Embree BVH where a list cannot decide.
 
 #include <memory>
 #include <random>
@@ -15,6 +23,7 @@
 #include <glm/vec2.hpp>
 
 #include "mesh/tri_mesh.h"
+#include "spatial/near_face_grid.h"
 
 namespace meshquilt {
 
@@ -30,13 +39,15 @@ struct MatchingOptions {
   int max_refined = 4;           //!< refine at most this many local minima of the exact cost
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
   int refine_steps = 3;          //!< pattern-search step halvings before the ICP steps
+  bool prune = true;             //!< evaluate exactly only candidates whose bound can matter
 };
 
 struct MatchResult {
   glm::dvec2 translation{0.0};  //!< where the swatch's origin goes in the output plane
   double cost = 0.0;            //!< exact E(t) (Eq. 3) at `translation`; 0 with no points
-  int scored = 0;               //!< candidates scored by the kernel
-  int rescored = 0;             //!< candidates re-scored exactly on the host
+  int scored = 0;               //!< candidates bounded by the kernel
+  int rescored = 0;             //!< candidates evaluated exactly on the host
+  int near = 0;                 //!< candidates within rescore_margin of the best (exact costs)
 };
 
 //! Places a swatch against output points. The swatch must be in its swatch frame (thin along z).
@@ -58,6 +69,10 @@ class GeometryMatcher {
                     const glm::dvec2& translation) const;
 
  private:
+  //! Eq. 2 for one point moved into the swatch's frame, exact in double.
+  double point_cost(const Vec3& q, const Vec3& normal) const;
+  //! The closest point of the swatch to q (ties to the lower face), exact in double.
+  Vec3 closest_point(const Vec3& q) const;
   //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).
   std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const glm::dvec2& start, double cost) const;
@@ -67,6 +82,7 @@ class GeometryMatcher {
   double cell_size_;
   std::vector<Vec3> face_normals_;
   std::unique_ptr<FaceBvh> bvh_;
+  NearFaceGrid grid_;
   std::unique_ptr<MatchingCost> kernel_;
 };
 

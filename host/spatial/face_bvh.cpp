@@ -237,7 +237,10 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
   const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
   if (d3 >= 0.0 && d4 <= d3) return finish(0, 1, 0);
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+  // Each edge region also needs the edge to have a length (its denominator is the squared
+  // length): a zero-length edge would give 0 / 0; such a triangle has no area and is handled
+  // below by its edges.
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 && d1 - d3 > 0.0) {
     const double v = d1 / (d1 - d3);
     return finish(1 - v, v, 0);
   }
@@ -245,12 +248,12 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
   const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
   if (d6 >= 0.0 && d5 <= d6) return finish(0, 0, 1);
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 && d2 - d6 > 0.0) {
     const double w = d2 / (d2 - d6);
     return finish(1 - w, 0, w);
   }
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 && (d4 - d3) + (d5 - d6) > 0.0) {
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
     return finish(0, 1 - w, w);
   }

@@ -1,0 +1,170 @@
+#include "spatial/near_face_grid.h"
+#include "spatial/face_bvh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+
+namespace meshquilt {
+
+int64_t NearFaceGrid::voxel_of(const Vec3& q) const {
+  const Vec3 rel = (q - origin) / voxel;
+  if (!(rel.x >= 0.0 && rel.y >= 0.0 && rel.z >= 0.0)) return -1;  // also NaN
+  const auto i = static_cast<int64_t>(rel.x), j = static_cast<int64_t>(rel.y), k = static_cast<int64_t>(rel.z);
+  if (i >= size.x || j >= size.y || k >= size.z) return -1;
+  return (k * size.y + j) * size.x + i;
+}
+
+double NearFaceGrid::box_distance(const Vec3& q) const {
+  return glm::length(glm::max(glm::max(box_low - q, q - box_high), Vec3(0.0)));
+}
+
+NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
+                                  int max_list, int64_t max_voxels) {
+  NearFaceGrid grid;
+  grid.box_low = Vec3(std::numeric_limits<double>::infinity());
+  grid.box_high = -grid.box_low;
+  for (const Tri& t : mesh.triangles)
+    for (int32_t v : t) {
+      grid.box_low = glm::min(grid.box_low, mesh.positions[v]);
+      grid.box_high = glm::max(grid.box_high, mesh.positions[v]);
+    }
+  const Vec3 extent = grid.box_high - grid.box_low + 2.0 * margin;
+  auto voxels_along = [](double length, double edge) { return static_cast<int64_t>(std::ceil(length / edge)) + 1; };
+  while (voxels_along(extent.x, voxel) * voxels_along(extent.y, voxel) * voxels_along(extent.z, voxel) > max_voxels)
+    voxel *= 1.25;
+  grid.voxel = voxel;
+  grid.origin = grid.box_low - margin;
+  grid.size = glm::ivec3(voxels_along(extent.x, voxel), voxels_along(extent.y, voxel), voxels_along(extent.z, voxel));
+  const glm::ivec3 n = grid.size;
+  const int64_t count = static_cast<int64_t>(n.x) * n.y * n.z;
+  // Far enough past a voxel's wall that a point rounded into the next voxel still counts.
+  grid.pad = 1e-6 * voxel + 1e-9 * glm::length(grid.box_high - grid.box_low);
+
+  // Buckets: every face in each voxel its bounding box touches.
+  auto voxel_range = [&](const Tri& t, glm::ivec3& lo, glm::ivec3& hi) {
+    Vec3 low = mesh.positions[t[0]], high = low;
+    for (int32_t v : {t[1], t[2]}) {
+      low = glm::min(low, mesh.positions[v]);
+      high = glm::max(high, mesh.positions[v]);
+    }
+    lo = glm::clamp(glm::ivec3(glm::floor((low - grid.origin) / voxel)), glm::ivec3(0), n - 1);
+    hi = glm::clamp(glm::ivec3(glm::floor((high - grid.origin) / voxel)), glm::ivec3(0), n - 1);
+  };
+  auto index = [&](int i, int j, int k) { return (static_cast<int64_t>(k) * n.y + j) * n.x + i; };
+  std::vector<uint32_t> bucket_start(count + 1, 0);
+  glm::ivec3 lo, hi;
+  for (const Tri& t : mesh.triangles) {
+    voxel_range(t, lo, hi);
+    for (int k = lo.z; k <= hi.z; ++k)
+      for (int j = lo.y; j <= hi.y; ++j)
+        for (int i = lo.x; i <= hi.x; ++i) ++bucket_start[index(i, j, k) + 1];
+  }
+  for (int64_t v = 0; v < count; ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<uint32_t> bucket(bucket_start[count]);
+  {
+    std::vector<uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
+    for (size_t f = 0; f < mesh.num_faces(); ++f) {
+      voxel_range(mesh.triangles[f], lo, hi);
+      for (int k = lo.z; k <= hi.z; ++k)
+        for (int j = lo.y; j <= hi.y; ++j)
+          for (int i = lo.x; i <= hi.x; ++i) bucket[fill[index(i, j, k)]++] = static_cast<uint32_t>(f);
+    }
+  }
+
+  // Every point within pad of a voxel lies within `radius` of its centre.
+  const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * grid.pad;
+  struct Scratch {
+    std::vector<uint32_t> stamp;
+    uint32_t current = 0;
+    std::vector<std::pair<double, uint32_t>> found;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  std::vector<std::vector<std::pair<double, uint32_t>>> lists(count);
+  grid.reach.assign(count, 0.0);
+  tbb::parallel_for(tbb::blocked_range<int64_t>(0, count, 256), [&](const tbb::blocked_range<int64_t>& range) {
+    Scratch& s = scratch.local();
+    if (s.stamp.empty()) s.stamp.assign(mesh.num_faces(), 0);
+    for (int64_t v = range.begin(); v != range.end(); ++v) {
+      const int i = static_cast<int>(v % n.x), j = static_cast<int>((v / n.x) % n.y), k = static_cast<int>(v / (int64_t{n.x} * n.y));
+      const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * voxel;
+      if (++s.current == 0) {  // the stamps wrapped around
+        std::fill(s.stamp.begin(), s.stamp.end(), 0);
+        s.current = 1;
+      }
+      s.found.clear();
+      double nearest = std::numeric_limits<double>::infinity();
+      // After shell `shell` every face with a point within (shell + 0.5) voxels of the centre
+      // (in the max norm, hence also in the Euclidean one) has been found, with its distance.
+      auto scan_shell = [&](int shell) {
+        const glm::ivec3 a = glm::max(glm::ivec3(i, j, k) - shell, glm::ivec3(0));
+        const glm::ivec3 b = glm::min(glm::ivec3(i, j, k) + shell, n - 1);
+        for (int z = a.z; z <= b.z; ++z)
+          for (int y = a.y; y <= b.y; ++y)
+            for (int x = a.x; x <= b.x; ++x) {
+              if (std::max({std::abs(x - i), std::abs(y - j), std::abs(z - k)}) != shell) continue;
+              const int64_t cell = index(x, y, z);
+              for (uint32_t m = bucket_start[cell]; m < bucket_start[cell + 1]; ++m) {
+                const uint32_t f = bucket[m];
+                if (s.stamp[f] == s.current) continue;
+                s.stamp[f] = s.current;
+                const Tri& t = mesh.triangles[f];
+                const double d = closest_point_on_triangle(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).distance;
+                s.found.emplace_back(d, f);
+                nearest = std::min(nearest, d);
+              }
+            }
+      };
+      // Past every voxel, or once every face is found, further shells find nothing.
+      const int last_shell = std::max({n.x, n.y, n.z});
+      const auto all_found = [&] { return s.found.size() == mesh.num_faces(); };
+      int shell = 0;
+      auto covered = [&] { return (shell + 0.5) * voxel; };
+      scan_shell(0);
+      while (covered() < std::min(nearest, far) && shell < last_shell && !all_found()) scan_shell(++shell);
+      if (all_found()) shell = last_shell;
+      std::sort(s.found.begin(), s.found.end());
+      const double lowest = s.found.empty() ? std::numeric_limits<double>::infinity() : s.found.front().first;
+      if (lowest > far) {
+        grid.reach[v] = std::clamp(std::min(lowest, shell >= last_shell ? lowest : covered()) - radius, 0.0,
+                                   std::numeric_limits<double>::max());
+        continue;
+      }
+      const double list_radius = nearest + 2.0 * radius + list_margin;
+      if (covered() < list_radius && shell < last_shell) {
+        while (covered() < list_radius && shell < last_shell && !all_found()) scan_shell(++shell);
+        if (all_found()) shell = last_shell;
+        std::sort(s.found.begin(), s.found.end());
+      }
+      size_t listed = 0;
+      while (listed < s.found.size() && listed < static_cast<size_t>(max_list) && s.found[listed].first <= list_radius)
+        ++listed;
+      const double unlisted = listed < s.found.size() ? s.found[listed].first : std::numeric_limits<double>::infinity();
+      // Finite even when every face is listed, so that lambda * reach is never 0 x infinity.
+      grid.reach[v] = std::clamp(std::min(unlisted, shell >= last_shell ? unlisted : covered()) - radius, 0.0,
+                                 std::numeric_limits<double>::max());
+      lists[v].assign(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed));
+    }
+  });
+  grid.start.assign(count + 1, 0);
+  for (int64_t v = 0; v < count; ++v) grid.start[v + 1] = grid.start[v] + static_cast<uint32_t>(lists[v].size());
+  grid.faces.reserve(grid.start[count]);
+  grid.near.reserve(grid.start[count]);
+  for (const auto& list : lists)
+    for (const auto& [lower, f] : list) {
+      grid.faces.push_back(f);
+      grid.near.push_back(std::max(lower - radius, 0.0));
+    }
+  return grid;
+}
+
+}  // namespace meshquilt

@@ -1,0 +1,48 @@
+#pragma once
+//! Nearest-face lists over a voxel grid of a triangle mesh: for every voxel, the faces that can
+//! come closest to a point in it, and a distance `reach` that every other face keeps from every
+//! point of the voxel. A query then needs one voxel and a short list, and knows from `reach`
+//! whether the list decided its answer. Geometry matching uses it twice: its kernel bounds
+//! Eq. 2 with one voxel fetch per pair, and the host evaluates Eq. 2 exactly from the same lists.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "mesh/tri_mesh.h"
+
+namespace meshquilt {
+
+struct NearFaceGrid {
+  Vec3 origin{0.0};          //!< lower corner of voxel (0, 0, 0)
+  double voxel = 0.0;        //!< voxel edge
+  glm::ivec3 size{0};        //!< voxels along x, y, z (x fastest)
+  Vec3 box_low{0.0};         //!< the faces' bounding box
+  Vec3 box_high{0.0};
+  std::vector<uint32_t> start;  //!< #voxels + 1 offsets into `faces`
+  std::vector<uint32_t> faces;  //!< listed faces per voxel, in increasing `near`
+  //! Per listed face: no point within `pad` of the voxel is nearer to it than this, so a scan
+  //! of the list may stop at the first entry that cannot beat what it has.
+  std::vector<double> near;
+  //! Per voxel: every face not in its list is at least this far from every point within
+  //! `pad` of the voxel (0 when nothing is known).
+  std::vector<double> reach;
+  double pad = 0.0;  //!< how far past its walls a voxel's reach still holds
+
+  //! The voxel holding q (x fastest), or -1 outside the grid.
+  int64_t voxel_of(const Vec3& q) const;
+  //! Distance from q to the faces' bounding box: no face is nearer (0 inside the box).
+  double box_distance(const Vec3& q) const;
+};
+
+//! Builds the lists for `mesh` with voxels of edge `voxel` (coarsened so that there are at most
+//! `max_voxels`) over its bounding box grown by `margin`. A voxel lists the faces within
+//! `list_margin` plus the voxel's diagonal of the face nearest its centre (the nearest
+//! `max_list` of them); voxels whose centre is farther than `far` from every face list none.
+//! Parallel; exact in double.
+//! \pre mesh has faces; voxel, margin, list_margin and far are positive and finite.
+NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
+                                  int max_list = 48, int64_t max_voxels = int64_t{1} << 21);
+
+}  // namespace meshquilt

@@ -1,0 +1,116 @@
+// NearFaceGrid against brute force over every face: for points anywhere in (and around) a voxel,
+// no unlisted face is nearer than the voxel's reach and no listed face nearer than its entry.
+#include <gtest/gtest.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "spatial/near_face_grid.h"
+
+namespace meshquilt {
+namespace {
+
+// Independent reference: the minimum of the distance to the plane (where the projection falls
+// inside) and to the three edges, sampled with no region tests.
+double reference_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  double best = std::numeric_limits<double>::infinity();
+  const Vec3 v[3] = {a, b, c};
+  for (int e = 0; e < 3; ++e) {
+    const Vec3 s = v[e], d = v[(e + 1) % 3] - v[e];
+    const double len2 = glm::dot(d, d);
+    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - s, d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, glm::length(p - (s + t * d)));
+  }
+  const Vec3 n = glm::cross(b - a, c - a);
+  const double n2 = glm::dot(n, n);
+  if (n2 > 0.0) {
+    const Vec3 q = p - glm::dot(p - a, n) / n2 * n;
+    if (glm::dot(glm::cross(b - q, c - q), n) >= 0 && glm::dot(glm::cross(c - q, a - q), n) >= 0 &&
+        glm::dot(glm::cross(a - q, b - q), n) >= 0)
+      best = std::min(best, glm::length(p - q));
+  }
+  return best;
+}
+
+TriMesh random_soup(std::mt19937& rng, int faces) {
+  std::uniform_real_distribution<double> x(0.0, 4.0), y(0.0, 3.0), z(0.0, 0.5), size(-0.3, 0.3);
+  TriMesh mesh;
+  for (int f = 0; f < faces; ++f) {
+    const Vec3 a(x(rng), y(rng), z(rng));
+    Vec3 b = a + Vec3(size(rng), size(rng), size(rng)), c = a + Vec3(size(rng), size(rng), size(rng));
+    if (f % 17 == 0) c = a + 0.5 * (b - a);                  // zero area
+    if (f % 29 == 0) c = a + Vec3(1.5, 0.2, 0.0);            // spans many voxels
+    const auto base = static_cast<int32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {a, b, c});
+    mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  return mesh;
+}
+
+void check_against_brute_force(const TriMesh& mesh, const NearFaceGrid& grid, std::mt19937& rng, int samples,
+                               double decided_share) {
+  const Vec3 span = Vec3(grid.size) * grid.voxel;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int listed_answers = 0;
+  for (int s = 0; s < samples; ++s) {
+    const Vec3 q = grid.origin + Vec3(unit(rng), unit(rng), unit(rng)) * span;
+    const int64_t v = grid.voxel_of(q);
+    ASSERT_GE(v, 0);
+    const std::set<uint32_t> listed(grid.faces.begin() + grid.start[v], grid.faces.begin() + grid.start[v + 1]);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t f = 0; f < mesh.num_faces(); ++f) {
+      const Tri& t = mesh.triangles[f];
+      const double d = reference_distance(q, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+      nearest = std::min(nearest, d);
+      if (!listed.count(static_cast<uint32_t>(f))) ASSERT_GE(d, grid.reach[v] - 1e-12) << "unlisted face " << f;
+    }
+    for (uint32_t k = grid.start[v]; k < grid.start[v + 1]; ++k) {
+      const Tri& t = mesh.triangles[grid.faces[k]];
+      ASSERT_GE(reference_distance(q, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]),
+                grid.near[k] - 1e-12);
+      if (k > grid.start[v]) ASSERT_LE(grid.near[k - 1], grid.near[k]);
+    }
+    EXPECT_GE(nearest, grid.box_distance(q) - 1e-12);
+    if (nearest < grid.reach[v]) ++listed_answers;
+  }
+  // The lists are not empty promises: for a share of the samples they decide the nearest face.
+  EXPECT_GT(listed_answers, decided_share * samples);
+}
+
+TEST(NearFaceGrid, ReachAndEntriesHoldEverywhereOnARandomSoup) {
+  std::mt19937 rng(5);
+  const TriMesh mesh = random_soup(rng, 300);
+  const NearFaceGrid grid = build_near_face_grid(mesh, 0.1, 0.3, 0.15, 0.6, 64);
+  EXPECT_EQ(grid.start.size(), static_cast<size_t>(grid.size.x) * grid.size.y * grid.size.z + 1);
+  EXPECT_EQ(grid.faces.size(), grid.near.size());
+  check_against_brute_force(mesh, grid, rng, 3000, 0.25);
+}
+
+TEST(NearFaceGrid, ShortListsAndCoarsenedVoxelsStayValid) {
+  std::mt19937 rng(6);
+  const TriMesh mesh = random_soup(rng, 300);
+  // Lists capped at 4 faces, and voxels coarsened to fit 2,000.
+  const NearFaceGrid grid = build_near_face_grid(mesh, 0.01, 0.3, 0.5, 1.0, 4, 2000);
+  EXPECT_LE(static_cast<int64_t>(grid.size.x) * grid.size.y * grid.size.z, 2000);
+  EXPECT_GT(grid.voxel, 0.01);
+  for (size_t v = 0; v + 1 < grid.start.size(); ++v) ASSERT_LE(grid.start[v + 1] - grid.start[v], 4u);
+  check_against_brute_force(mesh, grid, rng, 1500, 0.1);
+}
+
+TEST(NearFaceGrid, OutsideTheGridThereIsNoVoxel) {
+  std::mt19937 rng(7);
+  const TriMesh mesh = random_soup(rng, 20);
+  const NearFaceGrid grid = build_near_face_grid(mesh, 0.2, 0.1, 0.2, 0.5);
+  EXPECT_EQ(grid.voxel_of(grid.origin - Vec3(1e-9)), -1);
+  EXPECT_EQ(grid.voxel_of(grid.origin + Vec3(grid.size) * grid.voxel + 1e-9), -1);
+  EXPECT_EQ(grid.voxel_of(Vec3(NAN, 0.0, 0.0)), -1);
+  EXPECT_EQ(grid.voxel_of(grid.origin), 0);
+  EXPECT_DOUBLE_EQ(grid.box_distance(grid.box_high + Vec3(3.0, 4.0, 0.0)), 5.0);
+}
+
+}  // namespace
+}  // namespace meshquilt
