@@ -66,11 +66,15 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal) const {
     double best = std::numeric_limits<double>::infinity();
     for (uint32_t k = grid_.start[voxel]; k < grid_.start[voxel + 1]; ++k) {
       // Entries come nearest first: once one cannot beat the best, none after it can.
-      if (1.0 + lambda * grid_.near[k] >= best) break;
-      const Tri& t = swatch_.triangles[grid_.faces[k]];
-      ClosestPoint cp = closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]);
-      cp.face = static_cast<int32_t>(grid_.faces[k]);
-      best = std::min(best, cost(cp));
+      const double nearest = 1.0 + lambda * grid_.near[k];
+      if (nearest >= best) break;
+      const auto f = static_cast<int32_t>(grid_.faces[k]);
+      const double turn = 1.0 + glm::length(normal - face_normals_[f]);
+      if (nearest * turn >= best) continue;  // nor can this face, facing away
+      const Tri& t = swatch_.triangles[f];
+      const double distance =
+          closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]).distance;
+      best = std::min(best, (1.0 + lambda * distance) * turn);
     }
     // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
     if (best <= 1.0 + lambda * grid_.reach[voxel]) return best;
