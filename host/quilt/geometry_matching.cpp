@@ -56,14 +56,20 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
 
 GeometryMatcher::~GeometryMatcher() = default;
 
-double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal) const {
+double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, int32_t& face) const {
   const double lambda = options_.lambda;
-  const auto cost = [&](const ClosestPoint& cp) {
-    return (1.0 + lambda * cp.distance) * (1.0 + glm::length(normal - face_normals_[cp.face]));
+  const auto face_cost = [&](int32_t f, double distance) {
+    return (1.0 + lambda * distance) * (1.0 + glm::length(normal - face_normals_[f]));
   };
+  const auto distance_to = [&](int32_t f) {
+    const Tri& t = swatch_.triangles[f];
+    return closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]).distance;
+  };
+  // The hinted face (nearest at a translation close to this one) costs what it costs: starting
+  // from it the searches below stop sooner, and their minimum is the same.
+  double best = face >= 0 ? face_cost(face, distance_to(face)) : std::numeric_limits<double>::infinity();
   const int64_t voxel = grid_.voxel_of(q);
   if (voxel >= 0) {
-    double best = std::numeric_limits<double>::infinity();
     for (uint32_t k = grid_.start[voxel]; k < grid_.start[voxel + 1]; ++k) {
       // Entries come nearest first: once one cannot beat the best, none after it can.
       const double nearest = 1.0 + lambda * grid_.near[k];
@@ -71,17 +77,20 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal) const {
       const auto f = static_cast<int32_t>(grid_.faces[k]);
       const double turn = 1.0 + glm::length(normal - face_normals_[f]);
       if (nearest * turn >= best) continue;  // nor can this face, facing away
-      const Tri& t = swatch_.triangles[f];
-      const double distance =
-          closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]).distance;
-      best = std::min(best, (1.0 + lambda * distance) * turn);
+      const double c = (1.0 + lambda * distance_to(f)) * turn;
+      if (c < best) {
+        best = c;
+        face = f;
+      }
     }
     // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
     if (best <= 1.0 + lambda * grid_.reach[voxel]) return best;
   }
-  double best = std::numeric_limits<double>::infinity();
   // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
-  bvh_->min_cost_face(q, cost, [&](double d) { return (d - 1.0) / lambda; }, &best);
+  const ClosestPoint found = bvh_->min_cost_face(
+      q, [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); },
+      [&](double d) { return (d - 1.0) / lambda; }, &best, best);
+  if (found.face >= 0) face = found.face;
   return best;
 }
 
@@ -107,11 +116,17 @@ Vec3 GeometryMatcher::closest_point(const Vec3& q) const {
 
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const glm::dvec2& translation) const {
+  std::vector<int32_t> faces(points.size(), -1);
+  return exact_cost(points, normals, translation, faces);
+}
+
+double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                   const glm::dvec2& translation, std::vector<int32_t>& faces) const {
   const Vec3 shift(translation.x, translation.y, 0.0);
   // Per-point minima in parallel, summed in point order so the total is the same on every run.
   std::vector<double> costs(points.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i]);
+    for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i], faces[i]);
   });
   double total = 0.0;
   for (double c : costs) total += c;
@@ -124,6 +139,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
   // A pattern search that halves its step, so a periodic swatch whose period is not a whole
   // number of cells still lines up. It stays within one cell of the grid candidate.
   glm::dvec2 t = start;
+  std::vector<int32_t> faces(points.size(), -1);  // warm starts, carried from one evaluation to the next
   double step = 0.5 * cell_size_;
   for (int s = 0; s < options_.refine_steps; ++s, step *= 0.5) {
     bool improved = true;
@@ -133,7 +149,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
                                  glm::dvec2(0, -step)}) {
         const glm::dvec2 moved = t + d;
         if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) continue;
-        const double c = exact_cost(points, normals, moved);
+        const double c = exact_cost(points, normals, moved, faces);
         if (c < cost * (1.0 - 1e-12)) {
           cost = c;
           t = moved;
@@ -155,7 +171,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     shift /= static_cast<double>(points.size());
     const glm::dvec2 moved = t + shift;
     if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) break;
-    const double c = exact_cost(points, normals, moved);
+    const double c = exact_cost(points, normals, moved, faces);
     if (!(c < cost)) break;
     cost = c;
     t = moved;
@@ -187,9 +203,10 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   const auto threshold = [&](double best) { return best * (1.0 + options_.rescore_margin) + 1e-9; };
   std::vector<std::pair<size_t, double>> evaluated;
   double best = std::numeric_limits<double>::infinity();
+  std::vector<int32_t> faces(points.size(), -1);  // warm starts
   for (size_t c : order) {
     if (options_.prune && bounds[c] > threshold(best)) break;
-    const double cost = exact_cost(points, normals, candidates[c]);
+    const double cost = exact_cost(points, normals, candidates[c], faces);
     evaluated.emplace_back(c, cost);
     best = std::min(best, cost);
   }

@@ -69,8 +69,12 @@ class GeometryMatcher {
                     const glm::dvec2& translation) const;
 
  private:
-  //! Eq. 2 for one point moved into the swatch's frame, exact in double.
-  double point_cost(const Vec3& q, const Vec3& normal) const;
+  //! Eq. 3 with a warm start per point: `faces` (#P, -1 for none) holds faces to try first and
+  //! receives the minimizing faces. The result does not depend on the hints.
+  double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                    const glm::dvec2& translation, std::vector<int32_t>& faces) const;
+  //! Eq. 2 for one point moved into the swatch's frame, exact in double; `face` as above.
+  double point_cost(const Vec3& q, const Vec3& normal, int32_t& face) const;
   //! The closest point of the swatch to q (ties to the lower face), exact in double.
   Vec3 closest_point(const Vec3& q) const;
   //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).

@@ -338,12 +338,13 @@ ClosestPoint FaceBvh::closest_point(const Vec3& p, double max_distance) const {
 
 ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(const ClosestPoint&)>& cost,
                                     const std::function<double(double best_cost)>& radius_for,
-                                    double* best_cost) const {
+                                    double* best_cost, double known_cost) const {
   QueryState q;
   q.mesh = &mesh_;
   q.p = p;
   q.cost = &cost;
   q.radius_for = &radius_for;
+  q.best_cost = known_cost;
   q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
   if (mesh_.num_faces() > 0) {
     RTCPointQuery query;
@@ -351,7 +352,7 @@ ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(co
     query.y = static_cast<float>(p.y);
     query.z = static_cast<float>(p.z);
     query.time = 0.0f;
-    query.radius = INFINITY;
+    query.radius = std::isfinite(known_cost) ? padded_radius(radius_for(known_cost), q.slack) : INFINITY;
     RTCPointQueryContext context;
     rtcInitPointQueryContext(&context);
     rtcPointQuery(impl_->scene, &query, &context, &min_cost_callback, &q);

@@ -60,10 +60,14 @@ class FaceBvh {
   //! distance beyond which no face can beat best_cost (e.g. (D - 1) / lambda for Eq. 1), so the
   //! search radius shrinks as better faces are found; the answer is exact. `best_cost` receives
   //! the minimum (infinity when the mesh is empty).
+  //! `known_cost`, when finite, is a cost some face is known to reach: the search then starts
+  //! at radius_for(known_cost), and when no face costs less the answer has face -1 and
+  //! `best_cost` = known_cost.
   ClosestPoint min_cost_face(const Vec3& p,
                              const std::function<double(const ClosestPoint&)>& cost,
                              const std::function<double(double best_cost)>& radius_for,
-                             double* best_cost) const;
+                             double* best_cost,
+                             double known_cost = std::numeric_limits<double>::infinity()) const;
 
   //! The first face met by the ray origin + t * direction, 0 < t <= max_distance, both sides of a
   //! face counting; `distance` is t (the Euclidean distance when direction has unit length).
