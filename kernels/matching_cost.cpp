@@ -99,7 +99,7 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
   };
   if (grid.near.size() != grid.faces.size()) invalid("the nearest-face grid is malformed");
   std::vector<MatchingListed> listed(grid.faces.size());
-  for (std::size_t k = 0; k < listed.size(); ++k) listed[k] = {grid.faces[k], round_down(grid.near[k])};
+  for (std::size_t k = 0; k < listed.size(); ++k) listed[k] = {grid.faces[k], grid.near[k]};
   std::vector<MatchingVoxel> voxels(voxel_count);
   for (std::size_t v = 0; v < voxel_count; ++v) {
     voxels[v] = {grid.start[v], grid.start[v + 1] - grid.start[v], round_down(grid.reach[v]), 0.0f};

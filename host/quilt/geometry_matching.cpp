@@ -35,12 +35,14 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
     face_normals_.push_back(len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0));
   }
   bvh_ = std::make_unique<FaceBvh>(swatch_);
-  // Voxels of 3/4 of a mean edge listing the faces within 1.5 mean edges past the voxel's
-  // diagonal: with the drivers' lambda = 1 / mean edge, the cap 1 + lambda * reach then exceeds what most
-  // points cost even where the normals disagree, so the bound equals Eq. 2 for most pairs and
-  // the host rarely needs the BVH. A point 3 mean edges from the swatch costs at least 4.
+  // Voxels of 3/4 of a mean edge (coarser past 2^18 voxels) listing the faces within 1.5 mean
+  // edges past the voxel's diagonal, up to 128: with the drivers' lambda = 1 / mean edge, the
+  // cap 1 + lambda * reach then exceeds what most points cost even where the normals disagree,
+  // so the bound equals Eq. 2 for most pairs and the host rarely needs the BVH. Shorter lists
+  // (1 mean edge, or 64 faces) made the default jobs twice as slow. A point 3 mean edges from
+  // the swatch costs at least 4 whatever its normal; its voxel lists nothing.
   const double mean_edge = std::max(mean_edge_length(swatch), 1e-12);
-  grid_ = build_near_face_grid(swatch, 0.75 * mean_edge, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, 128);
+  grid_ = build_near_face_grid(swatch, 0.75 * mean_edge, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, 128, int64_t{1} << 18);
 
   MatchingSwatch device_swatch;
   device_swatch.positions.reserve(swatch.num_vertices());

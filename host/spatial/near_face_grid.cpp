@@ -162,7 +162,10 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   for (const auto& list : lists)
     for (const auto& [lower, f] : list) {
       grid.faces.push_back(f);
-      grid.near.push_back(std::max(lower - radius, 0.0));
+      const double near = std::max(lower - radius, 0.0);
+      float rounded = static_cast<float>(near);
+      if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
+      grid.near.push_back(rounded);
     }
   return grid;
 }

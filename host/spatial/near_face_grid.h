@@ -22,9 +22,10 @@ struct NearFaceGrid {
   Vec3 box_high{0.0};
   std::vector<uint32_t> start;  //!< #voxels + 1 offsets into `faces`
   std::vector<uint32_t> faces;  //!< listed faces per voxel, in increasing `near`
-  //! Per listed face: no point within `pad` of the voxel is nearer to it than this, so a scan
-  //! of the list may stop at the first entry that cannot beat what it has.
-  std::vector<double> near;
+  //! Per listed face: no point within `pad` of the voxel is nearer to it than this (rounded
+  //! down to float, which halves the lists' memory), so a scan of the list may stop at the first
+  //! entry that cannot beat what it has.
+  std::vector<float> near;
   //! Per voxel: every face not in its list is at least this far from every point within
   //! `pad` of the voxel (0 when nothing is known).
   std::vector<double> reach;
@@ -43,6 +44,6 @@ struct NearFaceGrid {
 //! Parallel; exact in double.
 //! \pre mesh has faces; voxel, margin, list_margin and far are positive and finite.
 NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
-                                  int max_list = 48, int64_t max_voxels = int64_t{1} << 21);
+                                  int max_list = 48, int64_t max_voxels = int64_t{1} << 18);
 
 }  // namespace meshquilt
