@@ -89,12 +89,19 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     std::vector<std::pair<double, uint32_t>> found;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
-  std::vector<std::vector<std::pair<double, uint32_t>>> lists(count);
+  // Voxels in fixed chunks, each listing into its own flat arrays, joined in order afterwards.
+  struct Part {
+    std::vector<uint32_t> faces, counts;
+    std::vector<float> near;
+  };
+  constexpr int64_t kChunk = 1024;
+  std::vector<Part> parts(static_cast<size_t>((count + kChunk - 1) / kChunk));
   grid.reach.assign(count, 0.0);
-  tbb::parallel_for(tbb::blocked_range<int64_t>(0, count, 256), [&](const tbb::blocked_range<int64_t>& range) {
+  tbb::parallel_for(size_t{0}, parts.size(), [&](size_t part) {
     Scratch& s = scratch.local();
     if (s.stamp.empty()) s.stamp.assign(mesh.num_faces(), 0);
-    for (int64_t v = range.begin(); v != range.end(); ++v) {
+    Part& out = parts[part];
+    for (int64_t v = static_cast<int64_t>(part) * kChunk; v < std::min(count, static_cast<int64_t>(part + 1) * kChunk); ++v) {
       const int i = static_cast<int>(v % n.x), j = static_cast<int>((v / n.x) % n.y), k = static_cast<int>(v / (int64_t{n.x} * n.y));
       const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * voxel;
       if (++s.current == 0) {  // the stamps wrapped around
@@ -137,6 +144,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       if (lowest > far) {
         grid.reach[v] = std::clamp(std::min(lowest, shell >= last_shell ? lowest : covered()) - radius, 0.0,
                                    std::numeric_limits<double>::max());
+        out.counts.push_back(0);
         continue;
       }
       const double list_radius = nearest + 2.0 * radius + list_margin;
@@ -152,21 +160,27 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       // Finite even when every face is listed, so that lambda * reach is never 0 x infinity.
       grid.reach[v] = std::clamp(std::min(unlisted, shell >= last_shell ? unlisted : covered()) - radius, 0.0,
                                  std::numeric_limits<double>::max());
-      lists[v].assign(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed));
+      out.counts.push_back(static_cast<uint32_t>(listed));
+      for (size_t m = 0; m < listed; ++m) {
+        const double near = std::max(s.found[m].first - radius, 0.0);
+        float rounded = static_cast<float>(near);
+        if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
+        out.faces.push_back(s.found[m].second);
+        out.near.push_back(rounded);
+      }
     }
   });
   grid.start.assign(count + 1, 0);
-  for (int64_t v = 0; v < count; ++v) grid.start[v + 1] = grid.start[v] + static_cast<uint32_t>(lists[v].size());
-  grid.faces.reserve(grid.start[count]);
-  grid.near.reserve(grid.start[count]);
-  for (const auto& list : lists)
-    for (const auto& [lower, f] : list) {
-      grid.faces.push_back(f);
-      const double near = std::max(lower - radius, 0.0);
-      float rounded = static_cast<float>(near);
-      if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
-      grid.near.push_back(rounded);
+  int64_t v = 0;
+  for (Part& part : parts) {
+    for (uint32_t listed : part.counts) {
+      grid.start[v + 1] = grid.start[v] + listed;
+      ++v;
     }
+    grid.faces.insert(grid.faces.end(), part.faces.begin(), part.faces.end());
+    grid.near.insert(grid.near.end(), part.near.begin(), part.near.end());
+    part = Part{};  // released as it is joined
+  }
   return grid;
 }
 
