@@ -139,8 +139,8 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       scan_shell(0);
       while (covered() < std::min(nearest, far) && shell < last_shell && !all_found()) scan_shell(++shell);
       if (all_found()) shell = last_shell;
-      std::sort(s.found.begin(), s.found.end());
-      const double lowest = s.found.empty() ? std::numeric_limits<double>::infinity() : s.found.front().first;
+      double lowest = std::numeric_limits<double>::infinity();
+      for (const auto& found : s.found) lowest = std::min(lowest, found.first);
       if (lowest > far) {
         grid.reach[v] = std::clamp(std::min(lowest, shell >= last_shell ? lowest : covered()) - radius, 0.0,
                                    std::numeric_limits<double>::max());
@@ -148,15 +148,16 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
         continue;
       }
       const double list_radius = nearest + 2.0 * radius + list_margin;
-      if (covered() < list_radius && shell < last_shell) {
-        while (covered() < list_radius && shell < last_shell && !all_found()) scan_shell(++shell);
-        if (all_found()) shell = last_shell;
-        std::sort(s.found.begin(), s.found.end());
-      }
-      size_t listed = 0;
-      while (listed < s.found.size() && listed < static_cast<size_t>(max_list) && s.found[listed].first <= list_radius)
-        ++listed;
-      const double unlisted = listed < s.found.size() ? s.found[listed].first : std::numeric_limits<double>::infinity();
+      while (covered() < list_radius && shell < last_shell && !all_found()) scan_shell(++shell);
+      if (all_found()) shell = last_shell;
+      // Only the faces within the list's radius need an order (most found faces lie beyond it).
+      const auto within = std::partition(s.found.begin(), s.found.end(),
+                                         [&](const auto& found) { return found.first <= list_radius; });
+      std::sort(s.found.begin(), within);
+      const size_t listed = std::min(static_cast<size_t>(within - s.found.begin()), static_cast<size_t>(max_list));
+      double unlisted = std::numeric_limits<double>::infinity();
+      for (auto it = s.found.begin() + static_cast<std::ptrdiff_t>(listed); it != s.found.end(); ++it)
+        unlisted = std::min(unlisted, it->first);
       // Finite even when every face is listed, so that lambda * reach is never 0 x infinity.
       grid.reach[v] = std::clamp(std::min(unlisted, shell >= last_shell ? unlisted : covered()) - radius, 0.0,
                                  std::numeric_limits<double>::max());
