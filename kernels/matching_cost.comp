@@ -57,9 +57,10 @@ float point_bound(vec3 q, vec3 n) {
     // Entries come nearest first: once one cannot beat the best, none after it can.
     if (1.0 + lambda * listed.near >= best) break;
     uint face = listed.face;
-    vec4 sphere = faces[face].sphere;
     vec4 normal = faces[face].normal;
     float normal_factor = 1.0 + length(n - normal.xyz);
+    if ((1.0 + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
+    vec4 sphere = faces[face].sphere;
     float sphere_gap = max(length(q - sphere.xyz) - sphere.w, 0.0);
     if ((1.0 + lambda * sphere_gap) * normal_factor < best) {
       float dist2 = triangle_distance2(q, faces[face].a.xyz, faces[face].b.xyz, faces[face].c.xyz, normal.w != 0.0);

@@ -62,6 +62,7 @@ float point_bound(const Swatch& s, vec3 q, vec3 n) {
     if (1.0f + lambda * listed.near >= best) break;
     const MatchingFace& f = s.faces[listed.face];
     const float normal_factor = 1.0f + glm::length(n - vec3(f.normal));
+    if ((1.0f + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
     const float sphere_gap = std::max(glm::length(q - vec3(f.sphere)) - f.sphere.w, 0.0f);
     if ((1.0f + lambda * sphere_gap) * normal_factor >= best) continue;
     const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f);

@@ -33,6 +33,10 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
                               swatch.positions[t[2]] - swatch.positions[t[0]]);
     const double len = glm::length(n);
     face_normals_.push_back(len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0));
+    const Vec3 centre = (swatch.positions[t[0]] + swatch.positions[t[1]] + swatch.positions[t[2]]) / 3.0;
+    double radius = 0.0;
+    for (int32_t v : t) radius = std::max(radius, glm::length(swatch.positions[v] - centre));
+    face_spheres_.push_back({centre, radius * (1.0 + 1e-12)});
   }
   bvh_ = std::make_unique<FaceBvh>(swatch_);
   // Voxels of 3/4 of a mean edge (coarser past 2^18 voxels) listing the faces within 1.5 mean
@@ -79,6 +83,8 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, int32_t& f
       const auto f = static_cast<int32_t>(grid_.faces[k]);
       const double turn = 1.0 + glm::length(normal - face_normals_[f]);
       if (nearest * turn >= best) continue;  // nor can this face, facing away
+      const auto& [centre, radius] = face_spheres_[f];
+      if ((1.0 + lambda * std::max(glm::length(q - centre) - radius, 0.0)) * turn >= best) continue;  // or far off
       const double c = (1.0 + lambda * distance_to(f)) * turn;
       if (c < best) {
         best = c;

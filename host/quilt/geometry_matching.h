@@ -85,6 +85,7 @@ class GeometryMatcher {
   MatchingOptions options_;
   double cell_size_;
   std::vector<Vec3> face_normals_;
+  std::vector<std::pair<Vec3, double>> face_spheres_;  //!< centroid and radius: a quick lower bound of Dist
   std::unique_ptr<FaceBvh> bvh_;
   NearFaceGrid grid_;
   std::unique_ptr<MatchingCost> kernel_;
