@@ -115,10 +115,14 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       auto scan_shell = [&](int shell) {
         const glm::ivec3 a = glm::max(glm::ivec3(i, j, k) - shell, glm::ivec3(0));
         const glm::ivec3 b = glm::min(glm::ivec3(i, j, k) + shell, n - 1);
+        // Only the cells of the shell itself: whole rows on its z and y faces, the two ends of
+        // every other row.
         for (int z = a.z; z <= b.z; ++z)
-          for (int y = a.y; y <= b.y; ++y)
-            for (int x = a.x; x <= b.x; ++x) {
-              if (std::max({std::abs(x - i), std::abs(y - j), std::abs(z - k)}) != shell) continue;
+          for (int y = a.y; y <= b.y; ++y) {
+            const bool whole_row = std::abs(z - k) == shell || std::abs(y - j) == shell;
+            const int step = whole_row || shell == 0 ? 1 : 2 * shell;
+            for (int x = whole_row ? a.x : i - shell; x <= (whole_row ? b.x : i + shell); x += step) {
+              if (x < a.x || x > b.x) continue;
               const int64_t cell = index(x, y, z);
               for (uint32_t m = bucket_start[cell]; m < bucket_start[cell + 1]; ++m) {
                 const uint32_t f = bucket[m];
@@ -130,6 +134,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
                 nearest = std::min(nearest, d);
               }
             }
+          }
       };
       // Past every voxel, or once every face is found, further shells find nothing.
       const int last_shell = std::max({n.x, n.y, n.z});
