@@ -35,7 +35,7 @@ class FaceBvh;
 
 struct MatchingOptions {
   double lambda = 1.0;           //!< Eq. 1 weight of distance against normal difference
-  double rescore_margin = 0.1;   //!< re-score candidates whose kernel cost <= best x (1 + margin)
+  double rescore_margin = 0.1;   //!< the near set: candidates whose exact cost <= best x (1 + margin)
   int max_refined = 4;           //!< refine at most this many local minima of the exact cost
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
   int refine_steps = 3;          //!< pattern-search step halvings before the ICP steps
