@@ -1,11 +1,11 @@
 #include "quilt/quilt_policies.h"
 
 #include <algorithm>
-#include <limits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "mesh/measures.h"
 #include "spatial/box_grid.h"
 #include "spatial/triangle_intersection.h"
 
@@ -32,44 +32,34 @@ bool passes_through(const TriMesh& candidate, const std::vector<const TriMesh*>&
   if (others.empty() || candidate.num_faces() == 0) return false;
   // Only candidate-against-other pairs are tested, through a hash of the candidate's faces
   // (cells about four faces across), and the first intersection ends the search.
-  const auto box_of = [](const TriMesh& mesh, const Tri& t, Vec3& lo, Vec3& hi) {
-    lo = hi = mesh.positions[t[0]];
-    for (int k = 1; k < 3; ++k) {
-      lo = glm::min(lo, mesh.positions[t[k]]);
-      hi = glm::max(hi, mesh.positions[t[k]]);
-    }
+  const auto box_of = [](const TriMesh& mesh, const Tri& t) {
+    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    return Box3{glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c)};
   };
-  Vec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
-  std::vector<Vec3> face_lo(candidate.num_faces()), face_hi(candidate.num_faces());
+  Box3 whole;
+  std::vector<Box3> boxes(candidate.num_faces());
   double extent = 0.0;
   for (size_t f = 0; f < candidate.num_faces(); ++f) {
-    box_of(candidate, candidate.triangles[f], face_lo[f], face_hi[f]);
-    low = glm::min(low, face_lo[f]);
-    high = glm::max(high, face_hi[f]);
-    const Vec3 size = face_hi[f] - face_lo[f];
+    boxes[f] = box_of(candidate, candidate.triangles[f]);
+    whole = {glm::min(whole.lo, boxes[f].lo), glm::max(whole.hi, boxes[f].hi)};
+    const Vec3 size = boxes[f].extent();
     extent += std::max({size.x, size.y, size.z});
   }
-  BoxGrid grid(std::max(4.0 * extent / static_cast<double>(candidate.num_faces()), 1e-12 * glm::length(high - low) + 1e-300));
-  for (size_t f = 0; f < candidate.num_faces(); ++f) grid.insert(static_cast<int32_t>(f), face_lo[f], face_hi[f]);
-  const auto overlap = [](const Vec3& a_lo, const Vec3& a_hi, const Vec3& b_lo, const Vec3& b_hi) {
-    // Closed boxes: touching counts, as it does for the exact test.
-    return a_lo.x <= b_hi.x && b_lo.x <= a_hi.x && a_lo.y <= b_hi.y && b_lo.y <= a_hi.y && a_lo.z <= b_hi.z &&
-           b_lo.z <= a_hi.z;
-  };
+  BoxGrid grid(std::max(4.0 * extent / static_cast<double>(candidate.num_faces()),
+                        1e-12 * glm::length(whole.extent()) + 1e-300));
+  for (size_t f = 0; f < candidate.num_faces(); ++f) grid.insert(static_cast<int32_t>(f), boxes[f].lo, boxes[f].hi);
   const auto& x = candidate.positions;
   for (const TriMesh* other : others) {
     for (const Tri& t : other->triangles) {
-      Vec3 lo, hi;
-      box_of(*other, t, lo, hi);
-      if (!overlap(lo, hi, low, high)) continue;
+      // Closed boxes: touching counts, as it does for the exact test.
+      const Box3 box = box_of(*other, t);
+      if (!box.overlaps(whole)) continue;
       const auto& y = other->positions;
       bool hit = false;
-      grid.for_each_cell(glm::max(lo, low), glm::min(hi, high), [&](const std::vector<int32_t>& faces) {
-        for (int32_t f = 0; !hit && f < static_cast<int32_t>(faces.size()); ++f) {
-          const int32_t c = faces[f];
-          if (!overlap(lo, hi, face_lo[c], face_hi[c])) continue;
-          const Tri& a = candidate.triangles[c];
-          hit = triangles_intersect(x[a[0]], x[a[1]], x[a[2]], y[t[0]], y[t[1]], y[t[2]]);
+      grid.for_each_cell(glm::max(box.lo, whole.lo), glm::min(box.hi, whole.hi), [&](const std::vector<int32_t>& faces) {
+        for (size_t k = 0; !hit && k < faces.size(); ++k) {
+          const Tri& a = candidate.triangles[faces[k]];
+          hit = box.overlaps(boxes[faces[k]]) && triangles_intersect(x[a[0]], x[a[1]], x[a[2]], y[t[0]], y[t[1]], y[t[2]]);
         }
       });
       if (hit) return true;

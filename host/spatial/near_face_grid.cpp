@@ -1,5 +1,4 @@
 #include "spatial/near_face_grid.h"
-#include "spatial/face_bvh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "spatial/face_bvh.h"
 
 namespace meshquilt {
 
@@ -22,10 +22,6 @@ int64_t NearFaceGrid::voxel_of(const Vec3& q) const {
   const auto i = static_cast<int64_t>(rel.x), j = static_cast<int64_t>(rel.y), k = static_cast<int64_t>(rel.z);
   if (i >= size.x || j >= size.y || k >= size.z) return -1;
   return (k * size.y + j) * size.x + i;
-}
-
-double NearFaceGrid::box_distance(const Vec3& q) const {
-  return glm::length(glm::max(glm::max(box_low - q, q - box_high), Vec3(0.0)));
 }
 
 NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
@@ -48,7 +44,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   const glm::ivec3 n = grid.size;
   const int64_t count = static_cast<int64_t>(n.x) * n.y * n.z;
   // Far enough past a voxel's wall that a point rounded into the next voxel still counts.
-  grid.pad = 1e-6 * voxel + 1e-9 * glm::length(grid.box_high - grid.box_low);
+  const double pad = 1e-6 * voxel + 1e-9 * glm::length(grid.box_high - grid.box_low);
 
   // Buckets: every face in each voxel its bounding box touches.
   auto voxel_range = [&](const Tri& t, glm::ivec3& lo, glm::ivec3& hi) {
@@ -82,7 +78,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   }
 
   // Every point within pad of a voxel lies within `radius` of its centre.
-  const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * grid.pad;
+  const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * pad;
   struct Scratch {
     std::vector<uint32_t> stamp;
     uint32_t current = 0;

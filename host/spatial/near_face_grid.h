@@ -22,19 +22,17 @@ struct NearFaceGrid {
   Vec3 box_high{0.0};
   std::vector<uint32_t> start;  //!< #voxels + 1 offsets into `faces`
   std::vector<uint32_t> faces;  //!< listed faces per voxel, in increasing `near`
-  //! Per listed face: no point within `pad` of the voxel is nearer to it than this (rounded
+  //! Per listed face: no point of the voxel is nearer to it than this (rounded
   //! down to float, which halves the lists' memory), so a scan of the list may stop at the first
   //! entry that cannot beat what it has.
   std::vector<float> near;
-  //! Per voxel: every face not in its list is at least this far from every point within
-  //! `pad` of the voxel (0 when nothing is known).
+  //! Per voxel: every face not in its list is at least this far from every point of the voxel
+  //! (0 when nothing is known). Both bounds also hold a little past the voxel's walls (1e-6 of
+  //! a voxel), for points rounded into a neighbour.
   std::vector<double> reach;
-  double pad = 0.0;  //!< how far past its walls a voxel's reach still holds
 
   //! The voxel holding q (x fastest), or -1 outside the grid.
   int64_t voxel_of(const Vec3& q) const;
-  //! Distance from q to the faces' bounding box: no face is nearer (0 inside the box).
-  double box_distance(const Vec3& q) const;
 };
 
 //! Builds the lists for `mesh` with voxels of edge `voxel` (coarsened so that there are at most
