@@ -11,5 +11,6 @@ void add_inspect_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_batch_command(CLI::App& app);
+void add_embed_command(CLI::App& app);
 
 }  // namespace meshquilt::cli

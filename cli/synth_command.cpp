@@ -28,6 +28,8 @@
 #include "quilt/guidance_field.h"
 #include "quilt/planar_quilting.h"
 #include "quilt/surface_quilting.h"
+#include "shell/shell_embedding.h"
+#include "shell/texture_file.h"
 #include "render_command.h"
 #include "default_swatch.h"
 
@@ -93,8 +95,10 @@ void run_synth(const SynthArgs& args) {
     throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ExitCode::invalid_option);
   if (curved && !(args.shell_height >= 0.0 && std::isfinite(args.shell_height)))
     throw InputError("--shell-height: expected a non-negative length", ExitCode::invalid_option);
-  if (!curved && (!args.field.empty() || !args.write_field.empty()))
-    throw InputError("--field and --write-field need --base", ExitCode::invalid_option);
+  if (!curved && (!args.field.empty() || !args.write_field.empty() || !args.write_texture.empty()))
+    throw InputError("--field, --write-field and --write-texture need --base", ExitCode::invalid_option);
+  if (args.embed != "shell" && args.embed != "normal")
+    throw InputError("--embed: expected shell or normal, got '" + args.embed + "'", ExitCode::invalid_option);
   const engine::BackendChoice backend = engine::parse_backend_choice(args.backend);
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
   if (args.cells < 4 || args.cells > 256)
@@ -104,6 +108,7 @@ void run_synth(const SynthArgs& args) {
   check_writable(output);
   if (!args.stats.empty()) check_writable(args.stats);
   if (!args.write_field.empty()) check_writable(args.write_field);
+  if (!args.write_texture.empty()) check_writable(args.write_texture);
   RenderOptions preview_options;
   preview_options.width = 900;
   preview_options.height = 700;
@@ -144,6 +149,9 @@ void run_synth(const SynthArgs& args) {
 
   TriMesh result;
   nlohmann::json summary;
+  std::vector<LocalVertex> local;
+  ShellTexture shell_texture;
+  ShellReport shell_report;
   if (curved) {
     SurfaceQuiltOptions options;
     static_cast<QuiltOptions&>(options) = common;
@@ -152,9 +160,33 @@ void run_synth(const SynthArgs& args) {
     const BaseSurface surface(base);
     const GuidanceField field = interpolate_field(surface, constraints);
     if (!args.write_field.empty()) write_field_obj(surface, field, 0.5 * mean_edge_length(base), args.write_field);
+    ShellEmbeddingOptions shell_options;
+    shell_options.minimize_stretch = args.distortion_min;
+    shell_options.stretch.seed = args.seed;
+    if (args.embed == "shell")
+      options.embedding = [&](const BaseSurface& surface_base, double shell_height) {
+        auto embedding = build_shell_embedding(*device, surface_base, shell_height, shell_options, &shell_report);
+        shell_texture = embedding->texture();
+        return std::unique_ptr<SurfaceEmbedding>(std::move(embedding));
+      };
     SurfaceQuiltStats stats;
-    result = quilt_surface(swatch, base, field, *device, options, &stats);
+    SurfaceQuilt quilt = quilt_surface(swatch, base, field, *device, options, &stats);
+    result = std::move(quilt.mesh);
+    local = std::move(quilt.local);
     summary = quilt_summary(stats);
+    summary["embed"] = args.embed;
+    summary["intersecting_face_pairs"] = stats.intersecting_face_pairs;
+    if (args.embed == "shell") {
+      summary["stretch_l2_initial"] = shell_report.stretch_initial;
+      summary["stretch_l2_final"] = shell_report.stretch_final;
+      summary["shell_tets"] = shell_report.tets;
+      summary["shell_charts"] = shell_report.charts;
+      summary["shell_reduced_vertices"] = shell_report.reduced_vertices;
+      summary["shell_invalid_prisms"] = shell_report.invalid_prisms;
+      summary["stages"]["atlas"] = shell_report.seconds_atlas;
+      summary["stages"]["shell_build"] = shell_report.seconds_shell;
+      summary["stages"]["stretch"] = shell_report.seconds_stretch;
+    }
     summary["base"] = args.base;
     summary["base_faces"] = stats.base_faces;
     summary["scale"] = args.scale;
@@ -179,6 +211,8 @@ void run_synth(const SynthArgs& args) {
   const auto write_start = Clock::now();
   check_interrupted();
   write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
+  if (!args.write_texture.empty())
+    write_texture_file(args.write_texture, make_quilt_texture(base, result, local, shell_texture));
   if (!args.preview.empty()) {
     if (curved) {
       // The base under its texture, in plain grey: an element id after the output's.

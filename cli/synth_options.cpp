@@ -21,6 +21,11 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
   cmd->add_option("--shell-height", args.shell_height,
                   "with --base: layer height in base units (default: the swatch's thickness at --scale)");
   cmd->add_option("--write-field", args.write_field, "with --base: write the field used as OBJ line segments");
+  cmd->add_option("--embed", args.embed, "with --base: shell (stretch-minimized shell map) or normal (displacement)")
+      ->capture_default_str();
+  cmd->add_flag("!--no-distortion-min", args.distortion_min, "with --embed shell: keep the original shell map");
+  cmd->add_option("--write-texture", args.write_texture,
+                  "with --base: write the result in texture space, for `meshquilt embed` over an edited base");
   cmd->add_option("--preview", args.preview, "write a PNG preview of the result (oblique, elements coloured)");
   add_max_memory_option(cmd);
   cmd->add_option("-o,--output", args.output, "output mesh (.ply with element ids, .obj with groups, .off, .stl)")
@@ -40,6 +45,7 @@ std::vector<std::string> synth_output_files(const SynthArgs& args) {
   if (!args.stats.empty()) files.push_back(args.stats);
   if (!args.write_field.empty()) files.push_back(args.write_field);
   if (!args.preview.empty()) files.push_back(args.preview);
+  if (!args.write_texture.empty()) files.push_back(args.write_texture);
   return files;
 }
 

@@ -29,6 +29,9 @@ struct SynthArgs {
   double shell_height = 0.0;        //!< layer height in base units; 0: the swatch's thickness at scale
   std::string write_field;          //!< write the field used as OBJ line segments
   std::string preview;              //!< write a PNG preview of the result
+  std::string embed = "shell";      //!< with --base: shell|normal
+  bool distortion_min = true;       //!< with --embed shell: minimize the shell map's stretch
+  std::string write_texture;        //!< with --base: write the result in texture space
 };
 
 //! Registers every option of synth on `cmd`, writing into `args` (which must outlive parsing).

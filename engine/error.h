@@ -24,6 +24,8 @@ enum class ExitCode : int {
   too_large = 11,      //!< input or job larger than the memory budget (--max-memory) or the format allows
   bad_manifest = 12,   //!< a batch manifest that cannot be read as jobs (syntax, unknown option, duplicates)
   batch_incomplete = 13, //!< a batch or report with jobs that failed or are not done
+  bad_texture = 14,    //!< a texture-space file that is truncated, corrupt or inconsistent
+  base_mismatch = 15,  //!< a base whose connectivity is not the one a texture was made over
 };
 
 //! Base of every meshquilt error; carries its exit code.

@@ -142,7 +142,7 @@ SurfaceRun run_surface(const TriMesh& raw_base, const TriMesh& swatch, double sc
   SurfaceQuiltOptions options;
   options.scale = scale;
   options.max_patches = max_patches;
-  run.output = quilt_surface(swatch, run.base, field, *device, options, &run.stats);
+  run.output = quilt_surface(swatch, run.base, field, *device, options, &run.stats).mesh;
   glm::dvec2 lo(1e300), hi(-1e300);
   for (const Vec3& p : swatch.positions) {
     lo = glm::min(lo, glm::dvec2(p));

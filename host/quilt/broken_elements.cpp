@@ -29,6 +29,7 @@ BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& element
     }
   const TriMesh joined = join_elements(parts);
   const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
+  removed.intersecting_face_pairs = static_cast<int>(pairs.size());
   std::map<std::pair<int32_t, int32_t>, int> element_pairs;
   for (const auto& [a, b] : pairs) ++element_pairs[std::minmax(joined.elements[a], joined.elements[b])];
   // Fewest drops: repeatedly remove the element that passes through the most live others (ties:

@@ -11,6 +11,7 @@ namespace meshquilt {
 struct BrokenElements {
   int open = 0;          //!< not closed 2-manifolds although the swatch's elements are
   int intersecting = 0;  //!< removed because they passed through others
+  int intersecting_face_pairs = 0;  //!< face pairs of different elements that met, before removal
 };
 
 //! Marks broken elements dead in `alive` (#elements): when `swatch_closed`, every element that

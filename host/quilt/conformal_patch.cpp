@@ -170,6 +170,95 @@ SurfacePoint SurfacePatch::nearest(const glm::dvec2& p) const {
   return result;
 }
 
+std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std::vector<int32_t>& faces,
+                                             const std::vector<int32_t>& corner_vertex,
+                                             const std::vector<int32_t>& vertex_base) {
+  const TriMesh& mesh = base.mesh;
+  const int32_t n = static_cast<int32_t>(vertex_base.size());
+  // LSCM: per face, grad v = rot90(grad u), two rows weighted by sqrt(area), in the face's own
+  // orthonormal frame (x along its first edge, normal out of the surface).
+  const int32_t pin_a = corner_vertex[0];
+  int32_t pin_b = corner_vertex[1];
+  {
+    double far = -1.0;
+    for (int32_t k = 0; k < n; ++k) {
+      const double d = glm::distance(mesh.positions[vertex_base[k]], mesh.positions[vertex_base[pin_a]]);
+      if (d > far) {
+        far = d;
+        pin_b = k;
+      }
+    }
+  }
+  // Unknown index of (vertex, coordinate); pinned ones map to -1.
+  std::vector<int32_t> column(2 * static_cast<size_t>(n), -1);
+  int32_t unknowns = 0;
+  for (int32_t k = 0; k < n; ++k)
+    if (k != pin_a && k != pin_b) {
+      column[k] = unknowns++;
+      column[n + k] = unknowns++;
+    }
+  const double pinned_value[4] = {0.0, 0.0, 1.0, 0.0};  // u_a, v_a, u_b, v_b
+  const auto pinned = [&](int32_t index) -> double {
+    const int32_t k = index % n, coordinate = index / n;
+    return pinned_value[(k == pin_a ? 0 : 2) + coordinate];
+  };
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<double> rhs;
+  int32_t row = 0;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const Tri& t = mesh.triangles[faces[f]];
+    const Vec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+    const double area = base.face_areas[faces[f]];
+    if (area <= 0.0) continue;
+    const Vec3 e1 = glm::normalize(p1 - p0);
+    const Vec3 e2 = glm::normalize(glm::cross(glm::cross(p1 - p0, p2 - p0), e1));
+    const glm::dvec2 q[3] = {glm::dvec2(0.0), glm::dvec2(glm::length(p1 - p0), 0.0),
+                             glm::dvec2(glm::dot(p2 - p0, e1), glm::dot(p2 - p0, e2))};
+    const double weight = std::sqrt(area);
+    double row_rhs[2] = {0.0, 0.0};
+    for (int k = 0; k < 3; ++k) {
+      // Gradient of the k-th hat function: rot90(q[k+2] - q[k+1]) / (2 area).
+      const glm::dvec2 edge = q[(k + 2) % 3] - q[(k + 1) % 3];
+      const glm::dvec2 g = glm::dvec2(-edge.y, edge.x) / (2.0 * area) * weight;
+      const int32_t vertex = corner_vertex[3 * f + k];
+      // Row 0: dv/dx + du/dy = 0; row 1: dv/dy - du/dx = 0.
+      const double coefficient[2][2] = {{g.y, g.x}, {-g.x, g.y}};  // [row][u or v]
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) {
+          const int32_t index = c * n + vertex;
+          if (column[index] >= 0)
+            triplets.emplace_back(row + r, column[index], coefficient[r][c]);
+          else
+            row_rhs[r] -= coefficient[r][c] * pinned(index);
+        }
+    }
+    rhs.push_back(row_rhs[0]);
+    rhs.push_back(row_rhs[1]);
+    row += 2;
+  }
+  std::vector<double> solution(static_cast<size_t>(unknowns), 0.0);
+  if (unknowns > 0) {
+    Eigen::SparseMatrix<double> A(row, unknowns);
+    A.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
+    const Eigen::SparseMatrix<double> normal = A.transpose() * A;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+    if (solver.info() != Eigen::Success) throw SolverError("conformal map: factorization failed");
+    const Eigen::VectorXd x = solver.solve(A.transpose() * b);
+    if (solver.info() != Eigen::Success || !x.allFinite()) throw SolverError("conformal map: solve failed");
+    for (int32_t k = 0; k < unknowns; ++k) solution[k] = x[k];
+  }
+  std::vector<glm::dvec2> uv(static_cast<size_t>(n));
+  for (int32_t k = 0; k < n; ++k) {
+    for (int c = 0; c < 2; ++c) {
+      const int32_t index = c * n + k;
+      uv[k][c] = column[index] >= 0 ? solution[column[index]] : pinned(index);
+    }
+  }
+
+  return uv;
+}
+
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius) {
   const TriMesh& mesh = base.mesh;
   SurfacePatch patch;
@@ -236,87 +325,7 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
     patch.closed = std::none_of(uses.begin(), uses.end(), [](const auto& e) { return e.second == 1; });
   }
 
-  // LSCM: per face, grad v = rot90(grad u), two rows weighted by sqrt(area), in the face's own
-  // orthonormal frame (x along its first edge, normal out of the surface).
-  const int32_t n = static_cast<int32_t>(patch.vertices.size());
-  const int32_t pin_a = patch.local_vertex_of_face_[0];
-  int32_t pin_b = patch.local_vertex_of_face_[1];
-  {
-    double far = -1.0;
-    for (int32_t k = 0; k < n; ++k) {
-      const double d = glm::distance(mesh.positions[patch.vertices[k]], mesh.positions[patch.vertices[pin_a]]);
-      if (d > far) {
-        far = d;
-        pin_b = k;
-      }
-    }
-  }
-  // Unknown index of (vertex, coordinate); pinned ones map to -1.
-  std::vector<int32_t> column(2 * static_cast<size_t>(n), -1);
-  int32_t unknowns = 0;
-  for (int32_t k = 0; k < n; ++k)
-    if (k != pin_a && k != pin_b) {
-      column[k] = unknowns++;
-      column[n + k] = unknowns++;
-    }
-  const double pinned_value[4] = {0.0, 0.0, 1.0, 0.0};  // u_a, v_a, u_b, v_b
-  const auto pinned = [&](int32_t index) -> double {
-    const int32_t k = index % n, coordinate = index / n;
-    return pinned_value[(k == pin_a ? 0 : 2) + coordinate];
-  };
-  std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<double> rhs;
-  int32_t row = 0;
-  for (size_t f = 0; f < faces.size(); ++f) {
-    const Tri& t = mesh.triangles[faces[f]];
-    const Vec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
-    const double area = base.face_areas[faces[f]];
-    if (area <= 0.0) continue;
-    const Vec3 e1 = glm::normalize(p1 - p0);
-    const Vec3 e2 = glm::normalize(glm::cross(glm::cross(p1 - p0, p2 - p0), e1));
-    const glm::dvec2 q[3] = {glm::dvec2(0.0), glm::dvec2(glm::length(p1 - p0), 0.0),
-                             glm::dvec2(glm::dot(p2 - p0, e1), glm::dot(p2 - p0, e2))};
-    const double weight = std::sqrt(area);
-    double row_rhs[2] = {0.0, 0.0};
-    for (int k = 0; k < 3; ++k) {
-      // Gradient of the k-th hat function: rot90(q[k+2] - q[k+1]) / (2 area).
-      const glm::dvec2 edge = q[(k + 2) % 3] - q[(k + 1) % 3];
-      const glm::dvec2 g = glm::dvec2(-edge.y, edge.x) / (2.0 * area) * weight;
-      const int32_t vertex = patch.local_vertex_of_face_[3 * f + k];
-      // Row 0: dv/dx + du/dy = 0; row 1: dv/dy - du/dx = 0.
-      const double coefficient[2][2] = {{g.y, g.x}, {-g.x, g.y}};  // [row][u or v]
-      for (int r = 0; r < 2; ++r)
-        for (int c = 0; c < 2; ++c) {
-          const int32_t index = c * n + vertex;
-          if (column[index] >= 0)
-            triplets.emplace_back(row + r, column[index], coefficient[r][c]);
-          else
-            row_rhs[r] -= coefficient[r][c] * pinned(index);
-        }
-    }
-    rhs.push_back(row_rhs[0]);
-    rhs.push_back(row_rhs[1]);
-    row += 2;
-  }
-  std::vector<double> solution(static_cast<size_t>(unknowns), 0.0);
-  if (unknowns > 0) {
-    Eigen::SparseMatrix<double> A(row, unknowns);
-    A.setFromTriplets(triplets.begin(), triplets.end());
-    const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
-    const Eigen::SparseMatrix<double> normal = A.transpose() * A;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-    if (solver.info() != Eigen::Success) throw SolverError("conformal map: factorization failed");
-    const Eigen::VectorXd x = solver.solve(A.transpose() * b);
-    if (solver.info() != Eigen::Success || !x.allFinite()) throw SolverError("conformal map: solve failed");
-    for (int32_t k = 0; k < unknowns; ++k) solution[k] = x[k];
-  }
-  patch.uv.resize(n);
-  for (int32_t k = 0; k < n; ++k) {
-    for (int c = 0; c < 2; ++c) {
-      const int32_t index = c * n + k;
-      patch.uv[k][c] = column[index] >= 0 ? solution[column[index]] : pinned(index);
-    }
-  }
+  patch.uv = conformal_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices);
 
   // Scale to the base's area, the seed at the origin; measure distortion and fold-overs.
   double plane_area = 0.0;

@@ -68,6 +68,16 @@ struct SurfacePatch {
   std::vector<int32_t> grid_offsets_, grid_faces_;
 };
 
+//! Flattens a set of base faces by LSCM (Levy et al. 2002): one sparse least-squares solve with
+//! two vertices pinned, orientation preserving, in arbitrary units (callers scale).
+//! faces          base faces (zero-area ones add no equations)
+//! corner_vertex  3 x #faces local vertex index of each corner
+//! vertex_base    #local vertices, the base vertex of each
+//! \throw SolverError when the system cannot be solved.
+std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std::vector<int32_t>& faces,
+                                             const std::vector<int32_t>& corner_vertex,
+                                             const std::vector<int32_t>& vertex_base);
+
 //! Grows a patch from `seed` over the faces reachable along edges within `radius` (a face joins
 //! when one of its vertices does; distances start from the seed point) and flattens it by LSCM,
 //! scaled so the plane area equals the base area, translated so the seed is the origin.

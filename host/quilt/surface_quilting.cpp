@@ -19,12 +19,6 @@
 namespace meshquilt {
 namespace {
 
-// An output vertex in local coordinates: a point of the base and a height above it (base units).
-struct LocalVertex {
-  SurfacePoint point;
-  double height = 0.0;
-};
-
 struct SurfaceElement {
   std::vector<LocalVertex> vertices;
   std::vector<Tri> triangles;
@@ -67,7 +61,7 @@ double field_angle(const BaseSurface& base, const SurfacePatch& patch, const Sur
 
 }  // namespace
 
-TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, const GuidanceField& field,
+SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, const GuidanceField& field,
                       engine::Device& device, const SurfaceQuiltOptions& options, SurfaceQuiltStats* stats_out) {
   if (!(options.scale > 0.0) || !std::isfinite(options.scale))
     throw InputError("--scale must be positive", ExitCode::invalid_option);
@@ -91,6 +85,11 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
   // Heights of the swatch frame map onto [0, shell].
   const double height_unit = thickness > 0.0 ? shell / thickness : unit;
   stats.shell_height = shell;
+  std::unique_ptr<SurfaceEmbedding> embedding;
+  {
+    StageTimer timer(seconds, "shell");
+    embedding = options.embedding ? options.embedding(base, shell) : std::make_unique<NormalEmbedding>(base);
+  }
 
   const double cell = std::min(swatch.extent.x, swatch.extent.y) / std::max(4, options.cells_across_swatch);
   const int swatch_nx = std::max(1, static_cast<int>(std::floor(swatch.extent.x / cell + 1e-9)));
@@ -206,7 +205,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
             const int32_t first = static_cast<int32_t>(rest.positions.size());
             for (int32_t v : element.triangles[f]) {
               const LocalVertex& lv = element.vertices[v];
-              rest.positions.push_back(base.position(lv.point) + lv.height * base.normal(lv.point));
+              rest.positions.push_back(embedding->position(lv.point, lv.height));
             }
             rest.triangles.push_back({first, first + 1, first + 2});
           }
@@ -258,7 +257,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
       for (const Vec3& p : plane_mesh.positions) {
         const std::optional<SurfacePoint> at = patch.locate(glm::dvec2(p));
         const SurfacePoint point = at ? *at : patch.nearest(glm::dvec2(p));
-        placed.positions.push_back(base.position(point) + p.z * height_unit * base.normal(point));
+        placed.positions.push_back(embedding->position(point, p.z * height_unit));
       }
       return placed;
     };
@@ -353,7 +352,6 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
       options.progress({processed_area, total_area, total_cells - seeds.unprocessed_count(), total_cells, stats.patches});
   }
 
-  // Embedding: displacement along interpolated vertex normals.
   std::vector<TriMesh> embedded(elements.size());
   {
     StageTimer timer(seconds, "embed");
@@ -361,7 +359,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
       if (!alive[e]) continue;
       TriMesh& mesh = embedded[e];
       for (const LocalVertex& v : elements[e].vertices)
-        mesh.positions.push_back(base.position(v.point) + v.height * base.normal(v.point));
+        mesh.positions.push_back(embedding->position(v.point, v.height));
       mesh.triangles = elements[e].triangles;
     }
   }
@@ -372,6 +370,7 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
     const BrokenElements removed = remove_broken_elements(meshes, swatch.closed_elements, alive);
     stats.dropped_open = removed.open;
     stats.dropped_intersecting = removed.intersecting;
+    stats.intersecting_face_pairs = removed.intersecting_face_pairs;
   }
   stats.dropped_elements = stats.dropped_open + stats.dropped_intersecting;
 
@@ -384,14 +383,16 @@ TriMesh quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, con
 
   std::vector<TriMesh> kept;
   std::vector<int32_t> kept_sources;
+  SurfaceQuilt result;
   for (size_t e = 0; e < elements.size(); ++e)
     if (alive[e]) {
       kept.push_back(std::move(embedded[e]));
       kept_sources.push_back(elements[e].source);
+      result.local.insert(result.local.end(), elements[e].vertices.begin(), elements[e].vertices.end());
     }
-  TriMesh result = join_elements(kept);
-  result.sources.resize(result.num_faces());
-  for (size_t f = 0; f < result.num_faces(); ++f) result.sources[f] = kept_sources[result.elements[f]];
+  result.mesh = join_elements(kept);
+  result.mesh.sources.resize(result.mesh.num_faces());
+  for (size_t f = 0; f < result.mesh.num_faces(); ++f) result.mesh.sources[f] = kept_sources[result.mesh.elements[f]];
   if (stats_out) *stats_out = stats;
   return result;
 }

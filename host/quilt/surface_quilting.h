@@ -4,13 +4,14 @@
 //! grows a local patch flattened by a conformal map, turned so the guidance field at the seed runs
 //! along the swatch's x axis, and the patch step (quilt/patch_step.h) runs in that plane. Output
 //! vertices live in local coordinates (base face, barycentrics, height), so every later patch sees
-//! them in its own plane; at the end they are embedded by displacement along interpolated vertex
-//! normals (Figure 8, left).
+//! them in its own plane; they are placed in space by an embedding (quilt/surface_embedding.h):
+//! a shell map by default, or displacement along interpolated vertex normals (Figure 8, left).
 
 #include <cstdint>
 
 #include "mesh/tri_mesh.h"
 #include "quilt/guidance_field.h"
+#include "quilt/surface_embedding.h"
 #include "quilt/quilt_options.h"
 
 namespace meshquilt {
@@ -28,6 +29,20 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! triangles) is shrunk, with its output sub-patch (the paper's rule).
   double max_area_distortion = 4.0;
   int max_shrinks = 4;  //!< shrink a patch at most this many times (by 0.75 each)
+  //! Places local coordinates in space; empty: displacement along vertex normals.
+  EmbeddingFactory embedding;
+};
+
+//! An output vertex in local coordinates: a base point and its height above it (base units).
+struct LocalVertex {
+  SurfacePoint point;
+  double height = 0.0;
+};
+
+//! A synthesized layer: the embedded mesh and where each of its vertices lies over the base.
+struct SurfaceQuilt {
+  TriMesh mesh;                    //!< with per-face element ids and sources
+  std::vector<LocalVertex> local;  //!< #V of mesh
 };
 
 //! What the surface driver adds to QuiltStats.
@@ -39,13 +54,13 @@ struct SurfaceQuiltStats : QuiltStats {
   double diagonal = 0.0;       //!< base bounding-box diagonal
   double covered_area = 0.0;   //!< base area of processed cells that are not holes
   double hole_area = 0.0;      //!< base area of hole cells
+  int intersecting_face_pairs = 0;  //!< face pairs of different elements meeting, before clean-up
 };
 
-//! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field). The output mesh
-//! carries per-face element ids and sources (the swatch element each face was copied from).
+//! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field).
 //! \pre base prepared by prepare_base.
 //! \throw InputError for a degenerate swatch or a bad option; DeviceError, SolverError; Cancelled.
-TriMesh quilt_surface(const TriMesh& swatch, const TriMesh& base, const GuidanceField& field,
+SurfaceQuilt quilt_surface(const TriMesh& swatch, const TriMesh& base, const GuidanceField& field,
                       engine::Device& device, const SurfaceQuiltOptions& options,
                       SurfaceQuiltStats* stats = nullptr);
 

@@ -1,0 +1,73 @@
+// `meshquilt embed --texture FILE --base MESH -o OUT`: places a layer written by
+// `synth --write-texture` over a base with the same connectivity (a pose, a sculpt, a scale of the
+// one it was made over) without synthesizing again (Section 3.2 of the paper, last paragraph).
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.h"
+#include "commands.h"
+#include "error.h"
+#include "mesh/base_mesh.h"
+#include "mesh/mesh_io.h"
+#include "shell/texture_file.h"
+
+namespace meshquilt::cli {
+namespace {
+
+struct EmbedArgs {
+  std::string texture;
+  std::string base;
+  std::string output;
+  std::string stats;
+};
+
+void run_embed(const EmbedArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  check_writable(args.output);
+  if (!args.stats.empty()) check_writable(args.stats);
+  const QuiltTexture texture = read_texture_file(args.texture);
+  const TriMesh base = prepare_base(read_mesh(args.base), args.base);
+  check_texture_base(texture, base, args.base);
+  const BaseSurface surface(base);
+  std::unique_ptr<SurfaceEmbedding> embedding;
+  Shell shell;
+  if (texture.shell.height > 0.0) {
+    shell = build_shell(surface, texture.shell.height);
+    embedding = std::make_unique<ShellEmbedding>(surface, texture.shell, shell);
+  } else {
+    embedding = std::make_unique<NormalEmbedding>(surface);
+  }
+  TriMesh out;
+  out.positions.reserve(texture.vertices.size());
+  for (const LocalVertex& v : texture.vertices) out.positions.push_back(embedding->position(v.point, v.height));
+  out.triangles = texture.triangles;
+  out.elements = texture.elements;
+  out.sources = texture.sources;
+  write_mesh(out, args.output);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::json summary = {{"texture", args.texture},     {"base", args.base},
+                            {"output", args.output},       {"faces", out.num_faces()},
+                            {"vertices", out.num_vertices()}, {"embed", texture.shell.height > 0.0 ? "shell" : "normal"},
+                            {"shell_reduced_vertices", shell.reduced_vertices}, {"seconds", seconds}};
+  if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
+  std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);
+}
+
+}  // namespace
+
+void add_embed_command(CLI::App& app) {
+  auto args = std::make_shared<EmbedArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "embed", "Place a layer written by `synth --write-texture` over a base with the same connectivity");
+  cmd->add_option("--texture", args->texture, "texture-space file from synth --write-texture")->required();
+  cmd->add_option("--base", args->base, "the base, edited (same faces and vertices, moved)")->required();
+  cmd->add_option("-o,--output", args->output, "output mesh (.ply, .obj, .off, .stl)")->required();
+  cmd->add_option("--stats", args->stats, "write statistics as JSON");
+  cmd->callback([args] { run_embed(*args); });
+}
+
+}  // namespace meshquilt::cli
