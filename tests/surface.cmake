@@ -6,5 +6,5 @@ meshquilt_test(guidance_field_test SOURCES guidance_field_test.cpp LIBS meshquil
 meshquilt_test(surface_cells_test SOURCES surface_cells_test.cpp LIBS meshquilt_quilt meshquilt_mesh)
 meshquilt_test(hole_tracker_test SOURCES hole_tracker_test.cpp LIBS meshquilt_quilt)
 meshquilt_test(surface_quilting_test SOURCES surface_quilting_test.cpp
-  LIBS meshquilt_quilt meshquilt_inspect meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_engine
+  LIBS meshquilt_shell meshquilt_quilt meshquilt_inspect meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_engine
   LABELS end_to_end)

@@ -15,6 +15,12 @@ class SurfaceEmbedding {
  public:
   virtual ~SurfaceEmbedding() = default;
   virtual Vec3 position(const SurfacePoint& point, double height) const = 0;
+  //! Where collision checks during synthesis see the point. An embedding whose final form comes
+  //! from float32 device work gives a stand-in computed on the host in double here, so that both
+  //! back ends make the same decisions; the rest give position().
+  virtual Vec3 position_during_synthesis(const SurfacePoint& point, double height) const {
+    return position(point, height);
+  }
 };
 
 //! Displacement along interpolated vertex normals (Figure 8, left).

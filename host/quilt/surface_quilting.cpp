@@ -205,7 +205,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
             const int32_t first = static_cast<int32_t>(rest.positions.size());
             for (int32_t v : element.triangles[f]) {
               const LocalVertex& lv = element.vertices[v];
-              rest.positions.push_back(embedding->position(lv.point, lv.height));
+              rest.positions.push_back(embedding->position_during_synthesis(lv.point, lv.height));
             }
             rest.triangles.push_back({first, first + 1, first + 2});
           }
@@ -257,7 +257,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
       for (const Vec3& p : plane_mesh.positions) {
         const std::optional<SurfacePoint> at = patch.locate(glm::dvec2(p));
         const SurfacePoint point = at ? *at : patch.nearest(glm::dvec2(p));
-        placed.positions.push_back(embedding->position(point, p.z * height_unit));
+        placed.positions.push_back(embedding->position_during_synthesis(point, p.z * height_unit));
       }
       return placed;
     };

@@ -16,7 +16,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 ShellEmbedding::ShellEmbedding(const BaseSurface& base, ShellTexture texture, Shell shell)
     : texture_(std::move(texture)),
       shell_(std::move(shell)),
-      map_(base, texture_.atlas, shell_, texture_.top_uv) {}
+      map_(base, texture_.atlas, shell_, texture_.top_uv),
+      original_(base, texture_.atlas, shell_, texture_.atlas.uv) {}
 
 std::unique_ptr<ShellEmbedding> build_shell_embedding(engine::Device& device, const BaseSurface& base, double height,
                                                       const ShellEmbeddingOptions& options, ShellReport* report) {

@@ -47,6 +47,11 @@ class ShellEmbedding final : public SurfaceEmbedding {
   ShellEmbedding& operator=(const ShellEmbedding&) = delete;
 
   Vec3 position(const SurfacePoint& point, double height) const override { return map_.to_shell(point, height); }
+  //! The original shell map (top corners over their base corners): exact on the host, and near
+  //! the minimized one, which the device computes in float32.
+  Vec3 position_during_synthesis(const SurfacePoint& point, double height) const override {
+    return original_.to_shell(point, height);
+  }
   const ShellMap& map() const { return map_; }
   const ShellTexture& texture() const { return texture_; }
 
@@ -54,6 +59,7 @@ class ShellEmbedding final : public SurfaceEmbedding {
   ShellTexture texture_;
   Shell shell_;
   ShellMap map_;
+  ShellMap original_;
 };
 
 //! Atlas, shell and (unless turned off) stretch minimization for `base` at `height`.
