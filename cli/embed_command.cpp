@@ -23,10 +23,13 @@ struct EmbedArgs {
   std::string base;
   std::string output;
   std::string stats;
+  std::string embed = "auto";
 };
 
 void run_embed(const EmbedArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  if (args.embed != "auto" && args.embed != "shell" && args.embed != "normal")
+    throw InputError("--embed: expected auto, shell or normal, got '" + args.embed + "'", ExitCode::invalid_option);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   const QuiltTexture texture = read_texture_file(args.texture);
@@ -35,7 +38,10 @@ void run_embed(const EmbedArgs& args) {
   const BaseSurface surface(base);
   std::unique_ptr<SurfaceEmbedding> embedding;
   Shell shell;
-  if (texture.shell.height > 0.0) {
+  if (args.embed == "shell" && texture.shell.height <= 0.0)
+    throw InputError(args.texture + ": written with --embed normal, so it holds no shell map", ExitCode::invalid_option);
+  const bool shell_map = texture.shell.height > 0.0 && args.embed != "normal";
+  if (shell_map) {
     shell = build_shell(surface, texture.shell.height);
     embedding = std::make_unique<ShellEmbedding>(surface, texture.shell, shell);
   } else {
@@ -51,7 +57,7 @@ void run_embed(const EmbedArgs& args) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = {{"texture", args.texture},     {"base", args.base},
                             {"output", args.output},       {"faces", out.num_faces()},
-                            {"vertices", out.num_vertices()}, {"embed", texture.shell.height > 0.0 ? "shell" : "normal"},
+                            {"vertices", out.num_vertices()}, {"embed", shell_map ? "shell" : "normal"},
                             {"shell_reduced_vertices", shell.reduced_vertices}, {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);
@@ -67,6 +73,8 @@ void add_embed_command(CLI::App& app) {
   cmd->add_option("--base", args->base, "the base, edited (same faces and vertices, moved)")->required();
   cmd->add_option("-o,--output", args->output, "output mesh (.ply, .obj, .off, .stl)")->required();
   cmd->add_option("--stats", args->stats, "write statistics as JSON");
+  cmd->add_option("--embed", args->embed, "auto (as synth embedded it), shell or normal (displacement)")
+      ->capture_default_str();
   cmd->callback([args] { run_embed(*args); });
 }
 

@@ -104,6 +104,21 @@ TEST_F(Embed, OverASquashedBaseFlipsNoFaceAndAddsNoIntersection) {
   EXPECT_LE(crossings(b), crossings(a));
 }
 
+TEST_F(Embed, NormalDisplacementOfTheSameTextureKeepsItsTopology) {
+  const CliResult r = run_cli("embed --embed normal --texture '" + (*dir_ / "t.mqt").string() + "' --base '" +
+                              (*dir_ / "sphere.off").string() + "' -o '" + (*dir_ / "normal.ply").string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = read_mesh(*dir_ / "normal.ply");
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_NE(a.positions, b.positions);
+  // On a sphere both embeddings put a vertex at about the same height: within a tenth of the
+  // layer (0.35 / 4 rings of the unit sphere's diagonal, roughly).
+  double worst = 0.0;
+  for (size_t v = 0; v < a.num_vertices(); ++v)
+    worst = std::max(worst, std::abs(glm::length(a.positions[v]) - glm::length(b.positions[v])));
+  EXPECT_LT(worst, 0.05);
+}
+
 class EmbedBadInput : public Embed {
  protected:
   void SetUp() override {
@@ -136,6 +151,13 @@ TEST_F(EmbedBadInput, CorruptTexture) {
 
 TEST_F(EmbedBadInput, NotATextureFile) {
   expect_failure(*dir_ / "sphere.off", *dir_ / "sphere.off", 14, "sphere.off");
+}
+
+TEST_F(EmbedBadInput, UnknownEmbedding) {
+  const CliResult r = run_cli("embed --embed sideways --texture '" + (*dir_ / "t.mqt").string() + "' --base '" +
+                              (*dir_ / "sphere.off").string() + "' -o '" + output_.string() + "'");
+  EXPECT_EQ(r.exit_code, 6) << r.output;
+  EXPECT_EQ(read_file(output_), "previous good output");
 }
 
 TEST_F(EmbedBadInput, BaseWithAnotherFaceCount) {
