@@ -6,7 +6,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-tools
   glslang-tools glslang-dev spirv-tools
   libembree-dev libpng-dev libtbb-dev libeigen3-dev libglm-dev libopenmesh-dev
-  libtet1.5-dev libboost-graph-dev
+  libboost-graph-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3
   clang-14 libclang-rt-14-dev

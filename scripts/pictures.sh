@@ -39,4 +39,11 @@ if [ -f "$bunny" ]; then
     -o "$work/bunny_chain.ply" --preview docs/images/bunny_chainmail.png >/dev/null
   "$meshquilt" synth --swatch "$work/weave.ply" --base "$bunny" --scale 0.16 --field data/bunny_field.json \
     --backend cpu --progress none -o "$work/bunny_weave.ply" --preview docs/images/bunny_weave_field.png >/dev/null
+  # One texture in a thick layer (twice the rings' height), placed through the shell map and by
+  # displacement along normals (the paper's Figure 8).
+  "$meshquilt" synth --swatch "$work/chain.ply" --base "$bunny" --scale 0.16 --shell-height 0.0107 --no-cleanup \
+    --backend cpu --progress none --write-texture "$work/thick.mqt" -o "$work/thick_shell.ply" >/dev/null
+  "$meshquilt" embed --embed normal --texture "$work/thick.mqt" --base "$bunny" -o "$work/thick_normal.ply" >/dev/null
+  "$meshquilt" render "$work/thick_shell.ply" --mode elements --size 800x600 -o docs/images/bunny_thick_shell.png
+  "$meshquilt" render "$work/thick_normal.ply" --mode elements --size 800x600 -o docs/images/bunny_thick_normal.png
 fi
