@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj ply off stl swatch netpbm field)
+[ ${#targets[@]} -gt 0 ] || targets=(obj ply off stl swatch netpbm field texture)
 jobs=${FUZZ_BUILD_JOBS:-2}
 
 command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 1; }

@@ -37,6 +37,7 @@ TEST(FuzzCorpus, Stl) { replay("stl", stl_body); }
 TEST(FuzzCorpus, Swatch) { replay("swatch", swatch_body); }
 TEST(FuzzCorpus, Netpbm) { replay("netpbm", netpbm_body); }
 TEST(FuzzCorpus, Field) { replay("field", field_body); }
+TEST(FuzzCorpus, Texture) { replay("texture", texture_body); }
 
 // The seeds are valid files: each must parse, not only not crash.
 TEST(FuzzCorpus, SeedMeshesParse) {

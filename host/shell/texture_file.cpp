@@ -54,11 +54,15 @@ class Reader {
   std::vector<T> get_all(size_t count) {
     if (count > (bytes_.size() - at_) / sizeof(T)) fail("truncated (ends inside its arrays)");
     std::vector<T> values(count);
-    std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
+    if (count > 0) std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
     at_ += count * sizeof(T);
     return values;
   }
   size_t at() const { return at_; }
+  //! Fails unless `count` items of `bytes` each are left, before anything is allocated for them.
+  void expect_items(size_t count, size_t bytes) const {
+    if (count > (bytes_.size() - at_) / bytes) fail("truncated (ends inside its arrays)");
+  }
   [[noreturn]] void fail(const std::string& problem) const {
     throw InputError(name_ + ": " + problem, ExitCode::bad_texture);
   }
@@ -131,10 +135,13 @@ void write_texture_file(const std::filesystem::path& file, const QuiltTexture& t
 }
 
 QuiltTexture read_texture_file(const std::filesystem::path& file) {
-  const std::string name = file.string();
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, name + ": cannot open");
+  if (!in) throw IoError(ExitCode::file_unreadable, file.string() + ": cannot open");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_texture(bytes, file.string());
+}
+
+QuiltTexture parse_texture(const std::string& bytes, const std::string& name) {
   Reader r(bytes, name);
   if (bytes.size() < kMagicBytes || bytes.compare(0, kMagicBytes, kMagic) != 0)
     r.fail("not a meshquilt texture file (no MQTEXTURE1 header)");
@@ -163,6 +170,7 @@ QuiltTexture read_texture_file(const std::filesystem::path& file) {
     atlas.on_boundary = r.get_all<uint8_t>(atlas_vertices);
     t.shell.top_uv = r.get_all<glm::dvec2>(atlas_vertices);
   }
+  r.expect_items(vertices, sizeof(int32_t) + 3 * sizeof(double));
   t.vertices.resize(vertices);
   for (LocalVertex& v : t.vertices) {
     v.point.face = r.get<int32_t>();

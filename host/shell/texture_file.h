@@ -49,6 +49,9 @@ void write_texture_file(const std::filesystem::path& file, const QuiltTexture& t
 //! when it is truncated, corrupt or its indices are inconsistent.
 QuiltTexture read_texture_file(const std::filesystem::path& file);
 
+//! The bytes of a texture file; `name` is used in messages. Same errors as read_texture_file.
+QuiltTexture parse_texture(const std::string& bytes, const std::string& name);
+
 //! \throw InputError(base_mismatch) "BASE: problem" when `base` (prepared) is not the base the
 //! texture was made over up to vertex positions: another vertex or face count, other triangles.
 void check_texture_base(const QuiltTexture& texture, const TriMesh& base, const std::string& base_name);

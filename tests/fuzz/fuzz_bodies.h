@@ -17,6 +17,7 @@
 #include "mesh/validation.h"
 #include "quilt/conformal_patch.h"
 #include "quilt/guidance_field.h"
+#include "shell/texture_file.h"
 #include "swatch/netpbm.h"
 
 namespace meshquilt::fuzz {
@@ -86,6 +87,26 @@ inline void field_body(const uint8_t* data, size_t size) {
     for (const Vec3& d : field.directions)
       if (!(std::abs(d.x * d.x + d.y * d.y + d.z * d.z - 1.0) < 1e-9)) __builtin_trap();
   } catch (const Error&) {
+  }
+}
+
+// The texture-space reader of `meshquilt embed`: what it accepts must be safe to place, every
+// index within the counts it states.
+inline void texture_body(const uint8_t* data, size_t size) {
+  try {
+    const QuiltTexture t = parse_texture(std::string(as_text(data, size)), "fuzz");
+    const size_t atlas_vertices = t.shell.atlas.uv.size();
+    if (t.shell.top_uv.size() != atlas_vertices) __builtin_trap();
+    for (const auto& corners : t.shell.atlas.corners)
+      for (int32_t a : corners)
+        if (a < 0 || static_cast<size_t>(a) >= atlas_vertices) __builtin_trap();
+    for (const LocalVertex& v : t.vertices)
+      if (v.point.face < 0 || static_cast<uint32_t>(v.point.face) >= t.base_faces) __builtin_trap();
+    for (const Tri& tri : t.triangles)
+      for (int32_t v : tri)
+        if (v < 0 || static_cast<size_t>(v) >= t.vertices.size()) __builtin_trap();
+    if (t.elements.size() != t.triangles.size() || t.sources.size() != t.triangles.size()) __builtin_trap();
+  } catch (const InputError&) {
   }
 }
 
