@@ -50,6 +50,13 @@ class Embed : public ::testing::Test {
                          const std::filesystem::path& out) {
     return run_cli("embed --texture '" + texture.string() + "' --base '" + base.string() + "' -o '" + out.string() + "'");
   }
+  // Embeds the suite's texture over `edited` (written as NAME.off); returns the output as NAME.ply.
+  static TriMesh embed_over(const std::string& name, const TriMesh& edited) {
+    write_off(*dir_ / (name + ".off"), edited);
+    const CliResult r = embed(*dir_ / "t.mqt", *dir_ / (name + ".off"), *dir_ / (name + ".ply"));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return read_mesh(*dir_ / (name + ".ply"));
+  }
   static std::filesystem::path* dir_;
   static TriMesh* base_;
 };
@@ -66,10 +73,7 @@ TEST_F(Embed, OverTheSameBaseGivesTheSynthesizedOutput) {
 }
 
 TEST_F(Embed, OverARigidlyMovedBaseGivesTheMovedOutput) {
-  write_off(*dir_ / "rigid.off", moved(*base_, rigid_motion));
-  const CliResult r = embed(*dir_ / "t.mqt", *dir_ / "rigid.off", *dir_ / "rigid.ply");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = read_mesh(*dir_ / "rigid.ply");
+  const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = embed_over("rigid", moved(*base_, rigid_motion));
   ASSERT_EQ(a.num_vertices(), b.num_vertices());
   double worst = 0.0;
   for (size_t v = 0; v < a.num_vertices(); ++v) worst = std::max(worst, glm::distance(rigid_motion(a.positions[v]), b.positions[v]));
@@ -77,10 +81,7 @@ TEST_F(Embed, OverARigidlyMovedBaseGivesTheMovedOutput) {
 }
 
 TEST_F(Embed, OverASquashedBaseFlipsNoFaceAndAddsNoIntersection) {
-  write_off(*dir_ / "squashed.off", moved(*base_, squash));
-  const CliResult r = embed(*dir_ / "t.mqt", *dir_ / "squashed.off", *dir_ / "squashed.ply");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = read_mesh(*dir_ / "squashed.ply");
+  const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = embed_over("squashed", moved(*base_, squash));
   ASSERT_EQ(a.num_faces(), b.num_faces());
   // Orientation against the surface below: the gradient of the (squashed) sphere's implicit
   // function at the face centroid.
