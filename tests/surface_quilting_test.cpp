@@ -341,10 +341,11 @@ TEST(SurfaceQuilting, WeftsFollowTheGuidanceField) {
   const double calm_degrees = calm_sum / std::max(1, calm) * 180.0 / M_PI;
   std::printf("wefts against the field: mean unsigned angle %.1f degrees over %d samples, %.1f over the %d where "
               "the field turns less than 45 degrees\n", mean_degrees, samples, calm_degrees, calm);
-  // Measured: 15.1 over all samples (the bar is 15), 10.1 away from singularities.
+  // Measured under the shell map: 14.6 over all samples (the bar is 15), 9.5 away from
+  // singularities.
   EXPECT_LT(calm_degrees, 15.0) << calm << " samples";
   EXPECT_GT(calm, samples / 2);
-  EXPECT_LT(mean_degrees, 16.0) << samples << " samples";
+  EXPECT_LT(mean_degrees, 15.0) << samples << " samples";
 }
 
 // Real bases from ../shared: a closed scan, genus 4, an open base, two components, the teapot.
