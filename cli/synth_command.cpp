@@ -183,6 +183,7 @@ void run_synth(const SynthArgs& args) {
       summary["shell_charts"] = shell_report.charts;
       summary["shell_reduced_vertices"] = shell_report.reduced_vertices;
       summary["shell_invalid_prisms"] = shell_report.invalid_prisms;
+      summary["shell_offset_crossings"] = shell_report.offset_intersections;
       summary["stages"]["atlas"] = shell_report.seconds_atlas;
       summary["stages"]["shell_build"] = shell_report.seconds_shell;
       summary["stages"]["stretch"] = shell_report.seconds_stretch;

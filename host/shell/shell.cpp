@@ -65,11 +65,31 @@ Shell build_shell(const BaseSurface& base, double height, const ShellOptions& op
     for (size_t v = 0; v < vertices; ++v) {
       Vec3 sum = shell.directions[v];
       for (const auto& [w, length] : base.edges[v]) sum += shell.directions[w];
-      // Never turn a direction away from its own normal's side.
       const double len = glm::length(sum);
-      next[v] = len > 0.0 && glm::dot(sum, base.vertex_normals[v]) > 0.0 ? sum / len : shell.directions[v];
+      next[v] = len > 0.0 ? sum / len : shell.directions[v];
     }
     shell.directions = std::move(next);
+  }
+  // A prism stands only where its vertices' directions leave every face around them on the
+  // outside: turn each direction toward the face it leans over most until all see it at
+  // min_direction_cosine (a few steps; the plain normal where that fails).
+  for (size_t v = 0; v < vertices; ++v) {
+    Vec3& d = shell.directions[v];
+    for (int step = 0; step < 16; ++step) {
+      double worst = 2.0;
+      Vec3 worst_normal(0.0);
+      for (int32_t f : base.vertex_faces[v]) {
+        if (base.face_areas[f] <= 0.0) continue;
+        const double c = glm::dot(d, base.face_normals[f]);
+        if (c < worst) {
+          worst = c;
+          worst_normal = base.face_normals[f];
+        }
+      }
+      if (worst >= options.min_direction_cosine) break;
+      d = glm::normalize(d + 0.5 * worst_normal);
+      if (step == 15) d = base.vertex_normals[v];
+    }
   }
   const auto place = [&] {
     shell.offset.resize(vertices);

@@ -5,7 +5,8 @@
 //!
 //! Every base vertex moves along its own direction by its own height: its area-weighted vertex
 //! normal, averaged with its neighbours' a few times, so that small dents of a scanned surface do
-//! not turn the offsets toward each other. Heights
+//! not turn the offsets toward each other, then turned back where it would lean over one of the
+//! vertex's faces (sharp features), since no height makes such a prism stand. Heights
 //! start at the shell height and are lowered where the shell would fold: where a tetrahedron of a
 //! prism loses its volume (concave regions, sharp creases) and where the offset surface meets
 //! itself or the base (thin parts). Lowered heights spread to neighbours with a slope limit, so
@@ -38,6 +39,7 @@ struct ShellOptions {
   double slope = 0.5;              //!< most height change per unit of edge length
   double min_height_share = 1e-3;  //!< heights never go below this share of the shell height
   int direction_smoothing = 16;    //!< averaging passes over the vertex normals offsets follow
+  double min_direction_cosine = 0.02;  //!< least cosine between a direction and its faces' normals
   int max_rounds = 40;
 };
 
