@@ -143,7 +143,19 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
 
 std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& points,
                                                       const std::vector<Vec3>& normals,
+                                                      const std::vector<glm::vec3>& fpoints,
+                                                      const std::vector<glm::vec3>& fnormals,
                                                       const glm::dvec2& start, double cost) const {
+  const auto within_cell = [&](const glm::dvec2& t) {
+    return std::abs(t.x - start.x) <= cell_size_ && std::abs(t.y - start.y) <= cell_size_;
+  };
+  // Lower bounds of Eq. 3 at a few translations (the kernel's, which never exceed the exact
+  // cost): a move whose bound is not below what it must beat cannot be taken, so it is skipped
+  // without changing a decision (prune = false evaluates every move, the reference).
+  const auto bounds = [&](const std::vector<glm::dvec2>& moves) {
+    if (!options_.prune) return std::vector<double>(moves.size(), -std::numeric_limits<double>::infinity());
+    return kernel_->score(fpoints, fnormals, std::vector<glm::vec2>(moves.begin(), moves.end()));
+  };
   // A pattern search that halves its step, so a periodic swatch whose period is not a whole
   // number of cells still lines up. It stays within one cell of the grid candidate.
   glm::dvec2 t = start;
@@ -153,14 +165,18 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     bool improved = true;
     while (improved) {
       improved = false;
+      std::vector<glm::dvec2> moves;
       for (const glm::dvec2 d : {glm::dvec2(step, 0), glm::dvec2(-step, 0), glm::dvec2(0, step),
-                                 glm::dvec2(0, -step)}) {
-        const glm::dvec2 moved = t + d;
-        if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) continue;
-        const double c = exact_cost(points, normals, moved, faces);
-        if (c < cost * (1.0 - 1e-12)) {
+                                 glm::dvec2(0, -step)})
+        if (within_cell(t + d)) moves.push_back(t + d);
+      const std::vector<double> bound = bounds(moves);
+      const double to_beat = cost * (1.0 - 1e-12);
+      for (size_t m = 0; m < moves.size(); ++m) {
+        if (!(bound[m] < to_beat)) continue;
+        const double c = exact_cost(points, normals, moves[m], faces);
+        if (c < to_beat) {
           cost = c;
-          t = moved;
+          t = moves[m];
           improved = true;
           break;
         }
@@ -178,7 +194,8 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     }
     shift /= static_cast<double>(points.size());
     const glm::dvec2 moved = t + shift;
-    if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) break;
+    if (!within_cell(moved)) break;
+    if (!(bounds({moved})[0] < cost)) break;
     const double c = exact_cost(points, normals, moved, faces);
     if (!(c < cost)) break;
     cost = c;
@@ -242,7 +259,8 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   if (minima.size() > static_cast<size_t>(options_.max_refined)) minima.resize(options_.max_refined);
 
   std::vector<std::pair<glm::dvec2, double>> refined;
-  for (const auto& [cost, c] : minima) refined.push_back(refine(points, normals, candidates[c], cost));
+  for (const auto& [cost, c] : minima)
+    refined.push_back(refine(points, normals, fpoints, fnormals, candidates[c], cost));
 
   // The host decides: a seeded random pick among the near-best, as image quilting does.
   double best_refined = std::numeric_limits<double>::infinity();

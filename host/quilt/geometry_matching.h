@@ -78,7 +78,10 @@ class GeometryMatcher {
   //! The closest point of the swatch to q (ties to the lower face), exact in double.
   Vec3 closest_point(const Vec3& q) const;
   //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).
+  //! `fpoints` and `fnormals` are the points as the kernel takes them: a move is evaluated
+  //! exactly only when its lower bound leaves room to improve, which decides as evaluating it.
   std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                       const std::vector<glm::vec3>& fpoints, const std::vector<glm::vec3>& fnormals,
                                        const glm::dvec2& start, double cost) const;
 
   const TriMesh& swatch_;
