@@ -129,15 +129,23 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
 }
 
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                   const glm::dvec2& translation, std::vector<int32_t>& faces) const {
+                                   const glm::dvec2& translation, std::vector<int32_t>& faces, double limit) const {
   const Vec3 shift(translation.x, translation.y, 0.0);
-  // Per-point minima in parallel, summed in point order so the total is the same on every run.
-  std::vector<double> costs(points.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i], faces[i]);
-  });
+  // Per-point minima in parallel, a block at a time, summed in point order so the total is the
+  // same on every run; after each block, every point left costs at least 1 (Eq. 2), so once
+  // that bound reaches `limit` the rest cannot matter.
+  constexpr size_t kBlock = 256;
+  std::vector<double> costs(std::min(points.size(), kBlock));
   double total = 0.0;
-  for (double c : costs) total += c;
+  for (size_t first = 0; first < points.size(); first += kBlock) {
+    const size_t last = std::min(points.size(), first + kBlock);
+    tbb::parallel_for(tbb::blocked_range<size_t>(first, last, 64), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i)
+        costs[i - first] = point_cost(points[i] - shift, normals[i], faces[i]);
+    });
+    for (size_t i = first; i < last; ++i) total += costs[i - first];
+    if (total + static_cast<double>(points.size() - last) >= limit) return std::numeric_limits<double>::infinity();
+  }
   return total;
 }
 
@@ -146,6 +154,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
                                                       const std::vector<glm::vec3>& fpoints,
                                                       const std::vector<glm::vec3>& fnormals,
                                                       const glm::dvec2& start, double cost) const {
+  constexpr double infinity = std::numeric_limits<double>::infinity();
   const auto within_cell = [&](const glm::dvec2& t) {
     return std::abs(t.x - start.x) <= cell_size_ && std::abs(t.y - start.y) <= cell_size_;
   };
@@ -173,7 +182,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
       const double to_beat = cost * (1.0 - 1e-12);
       for (size_t m = 0; m < moves.size(); ++m) {
         if (!(bound[m] < to_beat)) continue;
-        const double c = exact_cost(points, normals, moves[m], faces);
+        const double c = exact_cost(points, normals, moves[m], faces, options_.prune ? to_beat : infinity);
         if (c < to_beat) {
           cost = c;
           t = moves[m];
@@ -196,7 +205,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     const glm::dvec2 moved = t + shift;
     if (!within_cell(moved)) break;
     if (!(bounds({moved})[0] < cost)) break;
-    const double c = exact_cost(points, normals, moved, faces);
+    const double c = exact_cost(points, normals, moved, faces, options_.prune ? cost : infinity);
     if (!(c < cost)) break;
     cost = c;
     t = moved;
@@ -231,7 +240,10 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::vector<int32_t> faces(points.size(), -1);  // warm starts
   for (size_t c : order) {
     if (options_.prune && bounds[c] > threshold(best)) break;
-    const double cost = exact_cost(points, normals, candidates[c], faces);
+    // A cost above the threshold joins no decision (best only falls), so its sum may stop early.
+    const double limit = options_.prune ? std::nextafter(threshold(best), std::numeric_limits<double>::infinity())
+                                        : std::numeric_limits<double>::infinity();
+    const double cost = exact_cost(points, normals, candidates[c], faces, limit);
     evaluated.emplace_back(c, cost);
     best = std::min(best, cost);
   }
