@@ -4,9 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "atomic_file.h"
 #include "commands.h"
@@ -29,7 +28,8 @@ struct EmbedArgs {
 void run_embed(const EmbedArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   if (args.embed != "auto" && args.embed != "shell" && args.embed != "normal")
-    throw InputError("--embed: expected auto, shell or normal, got '" + args.embed + "'", ExitCode::invalid_option);
+    throw InputError("--embed: expected auto, shell or normal, got '" + args.embed + "'",
+                     ExitCode::invalid_option);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   const QuiltTexture texture = read_texture_file(args.texture);
@@ -39,7 +39,8 @@ void run_embed(const EmbedArgs& args) {
   std::unique_ptr<SurfaceEmbedding> embedding;
   Shell shell;
   if (args.embed == "shell" && texture.shell.height <= 0.0)
-    throw InputError(args.texture + ": written with --embed normal, so it holds no shell map", ExitCode::invalid_option);
+    throw InputError(args.texture + ": written with --embed normal, so it holds no shell map",
+                     ExitCode::invalid_option);
   const bool shell_map = texture.shell.height > 0.0 && args.embed != "normal";
   if (shell_map) {
     shell = build_shell(surface, texture.shell.height);
@@ -49,16 +50,21 @@ void run_embed(const EmbedArgs& args) {
   }
   TriMesh out;
   out.positions.reserve(texture.vertices.size());
-  for (const LocalVertex& v : texture.vertices) out.positions.push_back(embedding->position(v.point, v.height));
+  for (const LocalVertex& v : texture.vertices)
+    out.positions.push_back(embedding->position(v.point, v.height));
   out.triangles = texture.triangles;
   out.elements = texture.elements;
   out.sources = texture.sources;
   write_mesh(out, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json summary = {{"texture", args.texture},     {"base", args.base},
-                            {"output", args.output},       {"faces", out.num_faces()},
-                            {"vertices", out.num_vertices()}, {"embed", shell_map ? "shell" : "normal"},
-                            {"shell_reduced_vertices", shell.reduced_vertices}, {"seconds", seconds}};
+  nlohmann::json summary = {{"texture", args.texture},
+                            {"base", args.base},
+                            {"output", args.output},
+                            {"faces", out.num_faces()},
+                            {"vertices", out.num_vertices()},
+                            {"embed", shell_map ? "shell" : "normal"},
+                            {"shell_reduced_vertices", shell.reduced_vertices},
+                            {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);
 }

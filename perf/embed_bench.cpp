@@ -11,10 +11,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/geometric.hpp>
 
 #include "device.h"
 #include "mesh/base_mesh.h"
@@ -28,7 +27,9 @@ namespace {
 using namespace meshquilt;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -83,10 +84,11 @@ int main(int argc, char** argv) {
          return c + Vec3(std::cos(a) * q.x + std::sin(a) * q.z, q.y, -std::sin(a) * q.x + std::cos(a) * q.z);
        }},
       {"scaled by 1.3", [](const Vec3& p, const Vec3& c, double) { return c + 1.3 * (p - c); }},
-      {"rigidly moved", [](const Vec3& p, const Vec3&, double) { return Vec3(p.z, p.x, p.y) + Vec3(1.0, 2.0, 3.0); }},
+      {"rigidly moved",
+       [](const Vec3& p, const Vec3&, double) { return Vec3(p.z, p.x, p.y) + Vec3(1.0, 2.0, 3.0); }},
   };
-  std::printf("%s, default chain mail at --scale %g: %zu faces, synthesis %.1f s (one run)\n\n", argv[1], scale,
-              quilt.mesh.num_faces(), synthesis);
+  std::printf("%s, default chain mail at --scale %g: %zu faces, synthesis %.1f s (one run)\n\n", argv[1],
+              scale, quilt.mesh.num_faces(), synthesis);
   std::printf("| edit | re-embedding (s, median of %d) | / synthesis |\n|---|---|---|\n", runs);
   for (const Edit& edit : edits) {
     TriMesh edited = base;

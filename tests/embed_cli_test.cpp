@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-
 #include <glm/geometric.hpp>
 
 #include "mesh/mesh_io.h"
@@ -36,9 +35,10 @@ class Embed : public ::testing::Test {
     dir_ = new std::filesystem::path(scratch_dir("embed_cli"));
     base_ = new TriMesh(icosphere(2));
     write_off(*dir_ / "sphere.off", *base_);
-    const CliResult r = run_cli("synth --progress none --backend cpu --base '" + (*dir_ / "sphere.off").string() +
-                                "' --scale 0.35 --max-patches 8 --write-texture '" + (*dir_ / "t.mqt").string() +
-                                "' -o '" + (*dir_ / "synth.ply").string() + "'");
+    const CliResult r =
+        run_cli("synth --progress none --backend cpu --base '" + (*dir_ / "sphere.off").string() +
+                "' --scale 0.35 --max-patches 8 --write-texture '" + (*dir_ / "t.mqt").string() + "' -o '" +
+                (*dir_ / "synth.ply").string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   static void TearDownTestSuite() {
@@ -48,7 +48,8 @@ class Embed : public ::testing::Test {
   // Runs embed; returns its exit code and output.
   static CliResult embed(const std::filesystem::path& texture, const std::filesystem::path& base,
                          const std::filesystem::path& out) {
-    return run_cli("embed --texture '" + texture.string() + "' --base '" + base.string() + "' -o '" + out.string() + "'");
+    return run_cli("embed --texture '" + texture.string() + "' --base '" + base.string() + "' -o '" +
+                   out.string() + "'");
   }
   // Embeds the suite's texture over `edited` (written as NAME.off); returns the output as NAME.ply.
   static TriMesh embed_over(const std::string& name, const TriMesh& edited) {
@@ -76,7 +77,8 @@ TEST_F(Embed, OverARigidlyMovedBaseGivesTheMovedOutput) {
   const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = embed_over("rigid", moved(*base_, rigid_motion));
   ASSERT_EQ(a.num_vertices(), b.num_vertices());
   double worst = 0.0;
-  for (size_t v = 0; v < a.num_vertices(); ++v) worst = std::max(worst, glm::distance(rigid_motion(a.positions[v]), b.positions[v]));
+  for (size_t v = 0; v < a.num_vertices(); ++v)
+    worst = std::max(worst, glm::distance(rigid_motion(a.positions[v]), b.positions[v]));
   EXPECT_LT(worst, 1e-9);  // of a unit sphere
 }
 
@@ -106,8 +108,9 @@ TEST_F(Embed, OverASquashedBaseFlipsNoFaceAndAddsNoIntersection) {
 }
 
 TEST_F(Embed, NormalDisplacementOfTheSameTextureKeepsItsTopology) {
-  const CliResult r = run_cli("embed --embed normal --texture '" + (*dir_ / "t.mqt").string() + "' --base '" +
-                              (*dir_ / "sphere.off").string() + "' -o '" + (*dir_ / "normal.ply").string() + "'");
+  const CliResult r =
+      run_cli("embed --embed normal --texture '" + (*dir_ / "t.mqt").string() + "' --base '" +
+              (*dir_ / "sphere.off").string() + "' -o '" + (*dir_ / "normal.ply").string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const TriMesh a = read_mesh(*dir_ / "synth.ply"), b = read_mesh(*dir_ / "normal.ply");
   EXPECT_EQ(a.triangles, b.triangles);
@@ -155,8 +158,9 @@ TEST_F(EmbedBadInput, NotATextureFile) {
 }
 
 TEST_F(EmbedBadInput, UnknownEmbedding) {
-  const CliResult r = run_cli("embed --embed sideways --texture '" + (*dir_ / "t.mqt").string() + "' --base '" +
-                              (*dir_ / "sphere.off").string() + "' -o '" + output_.string() + "'");
+  const CliResult r =
+      run_cli("embed --embed sideways --texture '" + (*dir_ / "t.mqt").string() + "' --base '" +
+              (*dir_ / "sphere.off").string() + "' -o '" + output_.string() + "'");
   EXPECT_EQ(r.exit_code, 6) << r.output;
   EXPECT_EQ(read_file(output_), "previous good output");
 }

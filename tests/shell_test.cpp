@@ -4,10 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <glm/geometric.hpp>
 #include <random>
 #include <set>
-
-#include <glm/geometric.hpp>
 
 #include "device.h"
 #include "error.h"
@@ -121,7 +120,8 @@ void expect_valid_atlas(const TriMesh& mesh, const AtlasOptions& options) {
       EXPECT_EQ(atlas.vertex_chart[a], atlas.face_chart[f]);
     }
     // Orientation kept: no chart triangle is mirrored.
-    const glm::dvec2 a = atlas.uv[atlas.corners[f][0]], b = atlas.uv[atlas.corners[f][1]], c = atlas.uv[atlas.corners[f][2]];
+    const glm::dvec2 a = atlas.uv[atlas.corners[f][0]], b = atlas.uv[atlas.corners[f][1]],
+                     c = atlas.uv[atlas.corners[f][2]];
     if (base.face_areas[f] > 1e-12) EXPECT_GT(test::signed_area2(a, b, c), 0.0) << "face " << f;
   }
   for (int c = 0; c < atlas.charts; ++c) {
@@ -178,7 +178,8 @@ TEST(TextureAtlas, AFlatSheetIsOneIsometricChart) {
       const int a = t[k], b = t[(k + 1) % 3];
       // One chart: atlas vertex i is some base vertex; find both by their base index.
       const auto at = [&](int v) {
-        return atlas.uv[std::find(atlas.vertex_base.begin(), atlas.vertex_base.end(), v) - atlas.vertex_base.begin()];
+        return atlas
+            .uv[std::find(atlas.vertex_base.begin(), atlas.vertex_base.end(), v) - atlas.vertex_base.begin()];
       };
       EXPECT_NEAR(glm::distance(at(a), at(b)), glm::distance(grid.positions[a], grid.positions[b]), 1e-9);
     }
@@ -201,8 +202,7 @@ TEST(Shell, AConvexSphereKeepsTheFullHeight) {
   const Shell shell = build_shell(base, 0.05);
   EXPECT_EQ(shell.reduced_vertices, 0);
   EXPECT_EQ(shell.invalid_prisms, 0);
-  for (size_t v = 0; v < sphere.num_vertices(); ++v)
-    EXPECT_EQ(shell.heights[v], 0.05);
+  for (size_t v = 0; v < sphere.num_vertices(); ++v) EXPECT_EQ(shell.heights[v], 0.05);
   for (size_t v = 0; v < sphere.num_vertices(); ++v)
     EXPECT_NEAR(glm::length(shell.offset[v]), 1.05, 1e-4);  // smoothed normals, nearly radial
   expect_positive_tets(sphere, shell);
@@ -286,8 +286,11 @@ TEST(Shell, DirectionsNeverLeanOverAFace) {
     double worst = 1.0, worst_before = 1.0;
     for (size_t f = 0; f < bull.num_faces(); ++f) {
       const Tri& t = bull.triangles[f];
-      if (t[0] != static_cast<int32_t>(v) && t[1] != static_cast<int32_t>(v) && t[2] != static_cast<int32_t>(v)) continue;
-      const Vec3 c = glm::cross(bull.positions[t[1]] - bull.positions[t[0]], bull.positions[t[2]] - bull.positions[t[0]]);
+      if (t[0] != static_cast<int32_t>(v) && t[1] != static_cast<int32_t>(v) &&
+          t[2] != static_cast<int32_t>(v))
+        continue;
+      const Vec3 c = glm::cross(bull.positions[t[1]] - bull.positions[t[0]],
+                                bull.positions[t[2]] - bull.positions[t[0]]);
       if (glm::length(c) == 0.0) continue;
       worst = std::min(worst, glm::dot(shell.directions[v], glm::normalize(c)));
       worst_before = std::min(worst_before, glm::dot(before.directions[v], glm::normalize(c)));
@@ -319,8 +322,9 @@ TEST(ShellMap, OnAFlatSheetIsTheIdentityWithStretchOne) {
     if (p.bary.x + p.bary.y > 1.0) p.bary = 1.0 - p.bary;
     const double h = 0.1 * u(rng);
     const Tri& t = grid.triangles[p.face];
-    const Vec3 expected = (1.0 - p.bary.x - p.bary.y) * grid.positions[t[0]] + p.bary.x * grid.positions[t[1]] +
-                          p.bary.y * grid.positions[t[2]] + Vec3(0.0, 0.0, h);
+    const Vec3 expected = (1.0 - p.bary.x - p.bary.y) * grid.positions[t[0]] +
+                          p.bary.x * grid.positions[t[1]] + p.bary.y * grid.positions[t[2]] +
+                          Vec3(0.0, 0.0, h);
     const Vec3 got = map.to_shell(p, h);
     EXPECT_NEAR(glm::distance(got, expected), 0.0, 1e-12);
   }
@@ -470,7 +474,8 @@ TEST(StretchMinimization, VulkanAndCpuAgree) {
   const std::vector<glm::dvec2> on_vulkan = minimize_stretch(*vulkan, base, atlas, shell);
   // Float32 on both, with different rounding of cos/sin and fused operations, over 20 sweeps in
   // which each search starts where the last left off: within 2e-3 of the shell height.
-  for (size_t a = 0; a < on_cpu.size(); ++a) EXPECT_NEAR(glm::distance(on_cpu[a], on_vulkan[a]), 0.0, 2e-3 * 0.15);
+  for (size_t a = 0; a < on_cpu.size(); ++a)
+    EXPECT_NEAR(glm::distance(on_cpu[a], on_vulkan[a]), 0.0, 2e-3 * 0.15);
   const double l2_cpu = measure_stretch(ShellMap(base, atlas, shell, on_cpu)).l2;
   const double l2_vulkan = measure_stretch(ShellMap(base, atlas, shell, on_vulkan)).l2;
   EXPECT_NEAR(l2_cpu, l2_vulkan, 1e-5);
@@ -493,7 +498,8 @@ TEST(ShellEmbedding, KeepsElementsApartInAConcaveCornerWhereNormalDisplacementCr
       const double area = test::signed_area2(a, b, c);
       const glm::dvec2 q(x, y);
       const double b1 = test::signed_area2(a, q, c) / area, b2 = test::signed_area2(a, b, q) / area;
-      if (b1 >= -1e-12 && b2 >= -1e-12 && b1 + b2 <= 1.0 + 1e-12) return SurfacePoint{static_cast<int32_t>(f), {b1, b2}};
+      if (b1 >= -1e-12 && b2 >= -1e-12 && b1 + b2 <= 1.0 + 1e-12)
+        return SurfacePoint{static_cast<int32_t>(f), {b1, b2}};
     }
     ADD_FAILURE() << "no face under " << x << ", " << y;
     return SurfacePoint{};
@@ -504,7 +510,8 @@ TEST(ShellEmbedding, KeepsElementsApartInAConcaveCornerWhereNormalDisplacementCr
     const double x0 = side * 0.05, x1 = side * 0.45;
     std::vector<std::pair<SurfacePoint, double>> corners;
     for (int k = 0; k < 8; ++k)
-      corners.push_back({surface_point(k & 1 ? x1 : x0, k & 2 ? 2.4 : 1.6), k & 4 ? 0.98 * height : 0.25 * height});
+      corners.push_back(
+          {surface_point(k & 1 ? x1 : x0, k & 2 ? 2.4 : 1.6), k & 4 ? 0.98 * height : 0.25 * height});
     std::vector<Tri> faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                               {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
     boxes.push_back({corners, faces});

@@ -38,6 +38,7 @@ class NormalEmbedding final : public SurfaceEmbedding {
 //! Makes the embedding once the shell height (base units) is known, before synthesis, so that
 //! collision checks see the geometry where it will end up. The embedding may keep a reference to
 //! `base`, which lives until synthesis ends.
-using EmbeddingFactory = std::function<std::unique_ptr<SurfaceEmbedding>(const BaseSurface& base, double shell_height)>;
+using EmbeddingFactory =
+    std::function<std::unique_ptr<SurfaceEmbedding>(const BaseSurface& base, double shell_height)>;
 
 }  // namespace meshquilt

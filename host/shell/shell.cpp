@@ -1,9 +1,8 @@
 #include "shell/shell.h"
 
 #include <algorithm>
-#include <queue>
-
 #include <glm/geometric.hpp>
+#include <queue>
 
 #include "spatial/exact_predicates.h"
 #include "spatial/intersecting_pairs.h"
@@ -34,6 +33,45 @@ void limit_slope(const BaseSurface& base, double slope, std::vector<double>& hei
   }
 }
 
+// Unit offset directions: vertex normals averaged with their neighbours' `direction_smoothing`
+// times, then turned toward any face of their vertex they lean over.
+std::vector<Vec3> offset_directions(const BaseSurface& base, const ShellOptions& options) {
+  const size_t vertices = base.mesh.num_vertices();
+  std::vector<Vec3> directions = base.vertex_normals;
+  for (int pass = 0; pass < options.direction_smoothing; ++pass) {
+    std::vector<Vec3> next(vertices);
+    for (size_t v = 0; v < vertices; ++v) {
+      Vec3 sum = directions[v];
+      for (const auto& [w, length] : base.edges[v]) sum += directions[w];
+      const double len = glm::length(sum);
+      next[v] = len > 0.0 ? sum / len : directions[v];
+    }
+    directions = std::move(next);
+  }
+  // A prism stands only where its vertices' directions leave every face around them on the
+  // outside: turn each direction toward the face it leans over most until all see it at
+  // min_direction_cosine (a few steps; the plain normal where that fails).
+  for (size_t v = 0; v < vertices; ++v) {
+    Vec3& d = directions[v];
+    for (int step = 0; step < 16; ++step) {
+      double worst = 2.0;
+      Vec3 worst_normal(0.0);
+      for (int32_t f : base.vertex_faces[v]) {
+        if (base.face_areas[f] <= 0.0) continue;
+        const double c = glm::dot(d, base.face_normals[f]);
+        if (c < worst) {
+          worst = c;
+          worst_normal = base.face_normals[f];
+        }
+      }
+      if (worst >= options.min_direction_cosine) break;
+      d = glm::normalize(d + 0.5 * worst_normal);
+      if (step == 15) d = base.vertex_normals[v];
+    }
+  }
+  return directions;
+}
+
 }  // namespace
 
 std::array<PrismTet, 3> prism_tetrahedra(const Tri& t) {
@@ -59,41 +97,11 @@ Shell build_shell(const BaseSurface& base, double height, const ShellOptions& op
   shell.heights.assign(vertices, height);
   const double floor = options.min_height_share * height;
   std::vector<uint8_t> lowered(vertices, 0);
-  shell.directions = base.vertex_normals;
-  for (int pass = 0; pass < options.direction_smoothing; ++pass) {
-    std::vector<Vec3> next(vertices);
-    for (size_t v = 0; v < vertices; ++v) {
-      Vec3 sum = shell.directions[v];
-      for (const auto& [w, length] : base.edges[v]) sum += shell.directions[w];
-      const double len = glm::length(sum);
-      next[v] = len > 0.0 ? sum / len : shell.directions[v];
-    }
-    shell.directions = std::move(next);
-  }
-  // A prism stands only where its vertices' directions leave every face around them on the
-  // outside: turn each direction toward the face it leans over most until all see it at
-  // min_direction_cosine (a few steps; the plain normal where that fails).
-  for (size_t v = 0; v < vertices; ++v) {
-    Vec3& d = shell.directions[v];
-    for (int step = 0; step < 16; ++step) {
-      double worst = 2.0;
-      Vec3 worst_normal(0.0);
-      for (int32_t f : base.vertex_faces[v]) {
-        if (base.face_areas[f] <= 0.0) continue;
-        const double c = glm::dot(d, base.face_normals[f]);
-        if (c < worst) {
-          worst = c;
-          worst_normal = base.face_normals[f];
-        }
-      }
-      if (worst >= options.min_direction_cosine) break;
-      d = glm::normalize(d + 0.5 * worst_normal);
-      if (step == 15) d = base.vertex_normals[v];
-    }
-  }
+  shell.directions = offset_directions(base, options);
   const auto place = [&] {
     shell.offset.resize(vertices);
-    for (size_t v = 0; v < vertices; ++v) shell.offset[v] = mesh.positions[v] + shell.heights[v] * shell.directions[v];
+    for (size_t v = 0; v < vertices; ++v)
+      shell.offset[v] = mesh.positions[v] + shell.heights[v] * shell.directions[v];
   };
   // Faces whose prism has a flat or inverted tet.
   const auto failing_prisms = [&](bool exact_only) {
@@ -101,7 +109,8 @@ Shell build_shell(const BaseSurface& base, double height, const ShellOptions& op
     for (size_t f = 0; f < faces; ++f) {
       const Tri& t = mesh.triangles[f];
       if (base.face_areas[f] <= 0.0) continue;  // a degenerate face has a flat prism whatever the heights
-      const double nominal = base.face_areas[f] * (shell.heights[t[0]] + shell.heights[t[1]] + shell.heights[t[2]]) / 9.0;
+      const double nominal =
+          base.face_areas[f] * (shell.heights[t[0]] + shell.heights[t[1]] + shell.heights[t[2]]) / 9.0;
       for (const PrismTet& tet : prism_tetrahedra(t)) {
         const Vec3 a = shell.corner(t, tet[0], mesh.positions), b = shell.corner(t, tet[1], mesh.positions);
         const Vec3 c = shell.corner(t, tet[2], mesh.positions), d = shell.corner(t, tet[3], mesh.positions);
@@ -122,7 +131,8 @@ Shell build_shell(const BaseSurface& base, double height, const ShellOptions& op
     layers.positions.insert(layers.positions.end(), shell.offset.begin(), shell.offset.end());
     layers.triangles = mesh.triangles;
     const int32_t shift = static_cast<int32_t>(vertices);
-    for (const Tri& t : mesh.triangles) layers.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+    for (const Tri& t : mesh.triangles)
+      layers.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
     std::vector<int32_t> layer(2 * faces, 0);
     std::fill(layer.begin() + static_cast<std::ptrdiff_t>(faces), layer.end(), 1);
     const FaceIntersections hits = find_intersecting_faces(layers, layer);

@@ -34,11 +34,11 @@ using PrismTet = std::array<PrismCorner, 4>;
 std::array<PrismTet, 3> prism_tetrahedra(const Tri& t);
 
 struct ShellOptions {
-  double min_volume_share = 0.01;  //!< a tet must keep this share of its prism's nominal third
-  double reduction = 0.7;          //!< factor applied to the heights of a failing prism
-  double slope = 0.5;              //!< most height change per unit of edge length
-  double min_height_share = 1e-3;  //!< heights never go below this share of the shell height
-  int direction_smoothing = 16;    //!< averaging passes over the vertex normals offsets follow
+  double min_volume_share = 0.01;      //!< a tet must keep this share of its prism's nominal third
+  double reduction = 0.7;              //!< factor applied to the heights of a failing prism
+  double slope = 0.5;                  //!< most height change per unit of edge length
+  double min_height_share = 1e-3;      //!< heights never go below this share of the shell height
+  int direction_smoothing = 16;        //!< averaging passes over the vertex normals offsets follow
   double min_direction_cosine = 0.02;  //!< least cosine between a direction and its faces' normals
   int max_rounds = 40;
 };

@@ -19,8 +19,9 @@ ShellEmbedding::ShellEmbedding(const BaseSurface& base, ShellTexture texture, Sh
       map_(base, texture_.atlas, shell_, texture_.top_uv),
       original_(base, texture_.atlas, shell_, texture_.atlas.uv) {}
 
-std::unique_ptr<ShellEmbedding> build_shell_embedding(engine::Device& device, const BaseSurface& base, double height,
-                                                      const ShellEmbeddingOptions& options, ShellReport* report) {
+std::unique_ptr<ShellEmbedding> build_shell_embedding(engine::Device& device, const BaseSurface& base,
+                                                      double height, const ShellEmbeddingOptions& options,
+                                                      ShellReport* report) {
   ShellReport r;
   auto start = std::chrono::steady_clock::now();
   ShellTexture texture;
@@ -38,8 +39,9 @@ std::unique_ptr<ShellEmbedding> build_shell_embedding(engine::Device& device, co
 
   start = std::chrono::steady_clock::now();
   r.stretch_initial = measure_stretch(ShellMap(base, texture.atlas, shell, texture.atlas.uv)).l2;
-  texture.top_uv = options.minimize_stretch ? minimize_stretch(device, base, texture.atlas, shell, options.stretch)
-                                            : texture.atlas.uv;
+  texture.top_uv = options.minimize_stretch
+                       ? minimize_stretch(device, base, texture.atlas, shell, options.stretch)
+                       : texture.atlas.uv;
   r.seconds_stretch = seconds_since(start);
 
   auto embedding = std::make_unique<ShellEmbedding>(base, std::move(texture), std::move(shell));

@@ -25,7 +25,7 @@ struct ShellReport {
   double stretch_final = 1.0;    //!< after minimization (= initial without it)
   size_t tets = 0;
   int charts = 0;
-  int reduced_vertices = 0;      //!< base vertices whose offset height was lowered
+  int reduced_vertices = 0;  //!< base vertices whose offset height was lowered
   int invalid_prisms = 0;
   int offset_intersections = 0;
   double seconds_atlas = 0.0, seconds_shell = 0.0, seconds_stretch = 0.0;
@@ -46,7 +46,9 @@ class ShellEmbedding final : public SurfaceEmbedding {
   ShellEmbedding(const ShellEmbedding&) = delete;
   ShellEmbedding& operator=(const ShellEmbedding&) = delete;
 
-  Vec3 position(const SurfacePoint& point, double height) const override { return map_.to_shell(point, height); }
+  Vec3 position(const SurfacePoint& point, double height) const override {
+    return map_.to_shell(point, height);
+  }
   //! The original shell map (top corners over their base corners): exact on the host, and near
   //! the minimized one, which the device computes in float32.
   Vec3 position_during_synthesis(const SurfacePoint& point, double height) const override {
@@ -64,7 +66,8 @@ class ShellEmbedding final : public SurfaceEmbedding {
 
 //! Atlas, shell and (unless turned off) stretch minimization for `base` at `height`.
 //! \throw SolverError from the atlas; DeviceError from the kernel.
-std::unique_ptr<ShellEmbedding> build_shell_embedding(engine::Device& device, const BaseSurface& base, double height,
+std::unique_ptr<ShellEmbedding> build_shell_embedding(engine::Device& device, const BaseSurface& base,
+                                                      double height,
                                                       const ShellEmbeddingOptions& options = {},
                                                       ShellReport* report = nullptr);
 

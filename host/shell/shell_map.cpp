@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-
 #include <glm/matrix.hpp>
+#include <limits>
 
 namespace meshquilt {
 
@@ -40,7 +39,8 @@ std::array<glm::dvec3, 4> ShellMap::texture_tet(size_t i) const {
 std::array<Vec3, 4> ShellMap::shell_tet(size_t i) const {
   const size_t f = i / 3;
   std::array<Vec3, 4> s;
-  for (int k = 0; k < 4; ++k) s[k] = shell_.corner(base_.mesh.triangles[f], split_[f][i % 3][k], base_.mesh.positions);
+  for (int k = 0; k < 4; ++k)
+    s[k] = shell_.corner(base_.mesh.triangles[f], split_[f][i % 3][k], base_.mesh.positions);
   return s;
 }
 

@@ -18,9 +18,8 @@
 
 #include <array>
 #include <cstdint>
-#include <vector>
-
 #include <glm/mat3x3.hpp>
+#include <vector>
 
 #include "shell/shell.h"
 #include "shell/texture_atlas.h"
@@ -31,7 +30,8 @@ class ShellMap {
  public:
   //! `top_uv`: #A texture-plane position of each atlas vertex's top corner.
   //! \pre base, atlas and shell belong together; top_uv.size() == atlas.uv.size().
-  ShellMap(const BaseSurface& base, const TextureAtlas& atlas, const Shell& shell, std::vector<glm::dvec2> top_uv);
+  ShellMap(const BaseSurface& base, const TextureAtlas& atlas, const Shell& shell,
+           std::vector<glm::dvec2> top_uv);
 
   //! The shell point of a base point at `height` (base units).
   Vec3 to_shell(const SurfacePoint& point, double height) const;

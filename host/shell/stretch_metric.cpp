@@ -1,7 +1,6 @@
 #include "shell/stretch_metric.h"
 
 #include <cmath>
-
 #include <glm/matrix.hpp>
 
 namespace meshquilt {

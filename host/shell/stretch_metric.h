@@ -16,10 +16,10 @@
 namespace meshquilt {
 
 struct StretchMeasure {
-  double l2 = 1.0;           //!< normalized L2 stretch of the whole map
+  double l2 = 1.0;  //!< normalized L2 stretch of the whole map
   double texture_volume = 0.0;
   double shell_volume = 0.0;
-  int degenerate_tets = 0;   //!< tets of zero texture or shell volume, left out
+  int degenerate_tets = 0;  //!< tets of zero texture or shell volume, left out
 };
 
 StretchMeasure measure_stretch(const ShellMap& map);

@@ -1,7 +1,6 @@
 #include "shell/stretch_minimization.h"
 
 #include <algorithm>
-
 #include <glm/matrix.hpp>
 
 #include "stretch_linesearch.h"
@@ -30,8 +29,9 @@ std::vector<std::vector<uint32_t>> independent_batches(const BaseSurface& base, 
   return batches;
 }
 
-std::vector<glm::dvec2> minimize_stretch(engine::Device& device, const BaseSurface& base, const TextureAtlas& atlas,
-                                         const Shell& shell, const StretchOptions& options) {
+std::vector<glm::dvec2> minimize_stretch(engine::Device& device, const BaseSurface& base,
+                                         const TextureAtlas& atlas, const Shell& shell,
+                                         const StretchOptions& options) {
   std::vector<glm::dvec2> top = atlas.uv;
   const std::vector<std::vector<uint32_t>> batches = independent_batches(base, atlas);
   if (batches.empty() || options.sweeps <= 0 || !(shell.height > 0.0)) return top;

@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <queue>
 #include <unordered_map>
-
-#include <glm/geometric.hpp>
 
 namespace meshquilt {
 namespace {

@@ -12,18 +12,17 @@
 //! map's stretch is measured against, and large charts leave few fixed (lateral) boundaries.
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/vec2.hpp>
+#include <vector>
 
 #include "quilt/conformal_patch.h"
 
 namespace meshquilt {
 
 struct AtlasOptions {
-  double max_normal_angle = 1.2;      //!< radians between a chart face's normal and its seed's
-  double max_area_distortion = 2.5;   //!< max over min of plane area / base area in one chart
-  int32_t max_chart_faces = 20000;    //!< keeps each LSCM solve small
+  double max_normal_angle = 1.2;     //!< radians between a chart face's normal and its seed's
+  double max_area_distortion = 2.5;  //!< max over min of plane area / base area in one chart
+  int32_t max_chart_faces = 20000;   //!< keeps each LSCM solve small
 };
 
 struct TextureAtlas {

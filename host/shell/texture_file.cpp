@@ -82,8 +82,8 @@ uint64_t connectivity_hash(const TriMesh& base) {
   return fnv1a(base.triangles.data(), base.triangles.size() * sizeof(Tri));
 }
 
-QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh, const std::vector<LocalVertex>& local,
-                                const ShellTexture& shell) {
+QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh,
+                                const std::vector<LocalVertex>& local, const ShellTexture& shell) {
   QuiltTexture t;
   t.base_vertices = static_cast<uint32_t>(base.num_vertices());
   t.base_faces = static_cast<uint32_t>(base.num_faces());
@@ -198,7 +198,8 @@ QuiltTexture parse_texture(const std::string& bytes, const std::string& name) {
       r.fail("atlas coordinate not finite");
   }
   for (const LocalVertex& v : t.vertices) {
-    if (v.point.face < 0 || static_cast<uint32_t>(v.point.face) >= t.base_faces) r.fail("vertex face out of range");
+    if (v.point.face < 0 || static_cast<uint32_t>(v.point.face) >= t.base_faces)
+      r.fail("vertex face out of range");
     if (!std::isfinite(v.point.bary.x + v.point.bary.y + v.height)) r.fail("vertex coordinate not finite");
   }
   for (const Tri& tri : t.triangles)

@@ -29,7 +29,7 @@ namespace meshquilt {
 struct QuiltTexture {
   uint32_t base_vertices = 0, base_faces = 0;
   uint64_t base_connectivity = 0;
-  ShellTexture shell;                //!< empty atlas and height 0 for a normal-displacement layer
+  ShellTexture shell;  //!< empty atlas and height 0 for a normal-displacement layer
   std::vector<LocalVertex> vertices;
   std::vector<Tri> triangles;
   std::vector<int32_t> elements, sources;
@@ -39,8 +39,8 @@ struct QuiltTexture {
 uint64_t connectivity_hash(const TriMesh& base);
 
 //! The texture of a synthesized layer: `mesh` and `local` as quilt_surface returned them.
-QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh, const std::vector<LocalVertex>& local,
-                                const ShellTexture& shell);
+QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh,
+                                const std::vector<LocalVertex>& local, const ShellTexture& shell);
 
 //! Writes atomically. \throw IoError(write_failed).
 void write_texture_file(const std::filesystem::path& file, const QuiltTexture& texture);
