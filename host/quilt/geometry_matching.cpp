@@ -129,42 +129,21 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
 }
 
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                   const glm::dvec2& translation, std::vector<int32_t>& faces, double limit) const {
+                                   const glm::dvec2& translation, std::vector<int32_t>& faces) const {
   const Vec3 shift(translation.x, translation.y, 0.0);
-  // Per-point minima in parallel, a block at a time, summed in point order so the total is the
-  // same on every run; after each block, every point left costs at least 1 (Eq. 2), so once
-  // that bound reaches `limit` the rest cannot matter.
-  constexpr size_t kBlock = 256;
-  std::vector<double> costs(std::min(points.size(), kBlock));
+  // Per-point minima in parallel, summed in point order so the total is the same on every run.
+  std::vector<double> costs(points.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i], faces[i]);
+  });
   double total = 0.0;
-  for (size_t first = 0; first < points.size(); first += kBlock) {
-    const size_t last = std::min(points.size(), first + kBlock);
-    tbb::parallel_for(tbb::blocked_range<size_t>(first, last, 64), [&](const tbb::blocked_range<size_t>& range) {
-      for (size_t i = range.begin(); i != range.end(); ++i)
-        costs[i - first] = point_cost(points[i] - shift, normals[i], faces[i]);
-    });
-    for (size_t i = first; i < last; ++i) total += costs[i - first];
-    if (total + static_cast<double>(points.size() - last) >= limit) return std::numeric_limits<double>::infinity();
-  }
+  for (double c : costs) total += c;
   return total;
 }
 
 std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& points,
                                                       const std::vector<Vec3>& normals,
-                                                      const std::vector<glm::vec3>& fpoints,
-                                                      const std::vector<glm::vec3>& fnormals,
                                                       const glm::dvec2& start, double cost) const {
-  constexpr double infinity = std::numeric_limits<double>::infinity();
-  const auto within_cell = [&](const glm::dvec2& t) {
-    return std::abs(t.x - start.x) <= cell_size_ && std::abs(t.y - start.y) <= cell_size_;
-  };
-  // Lower bounds of Eq. 3 at a few translations (the kernel's, which never exceed the exact
-  // cost): a move whose bound is not below what it must beat cannot be taken, so it is skipped
-  // without changing a decision (prune = false evaluates every move, the reference).
-  const auto bounds = [&](const std::vector<glm::dvec2>& moves) {
-    if (!options_.prune) return std::vector<double>(moves.size(), -std::numeric_limits<double>::infinity());
-    return kernel_->score(fpoints, fnormals, std::vector<glm::vec2>(moves.begin(), moves.end()));
-  };
   // A pattern search that halves its step, so a periodic swatch whose period is not a whole
   // number of cells still lines up. It stays within one cell of the grid candidate.
   glm::dvec2 t = start;
@@ -174,18 +153,14 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     bool improved = true;
     while (improved) {
       improved = false;
-      std::vector<glm::dvec2> moves;
       for (const glm::dvec2 d : {glm::dvec2(step, 0), glm::dvec2(-step, 0), glm::dvec2(0, step),
-                                 glm::dvec2(0, -step)})
-        if (within_cell(t + d)) moves.push_back(t + d);
-      const std::vector<double> bound = bounds(moves);
-      const double to_beat = cost * (1.0 - 1e-12);
-      for (size_t m = 0; m < moves.size(); ++m) {
-        if (!(bound[m] < to_beat)) continue;
-        const double c = exact_cost(points, normals, moves[m], faces, options_.prune ? to_beat : infinity);
-        if (c < to_beat) {
+                                 glm::dvec2(0, -step)}) {
+        const glm::dvec2 moved = t + d;
+        if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) continue;
+        const double c = exact_cost(points, normals, moved, faces);
+        if (c < cost * (1.0 - 1e-12)) {
           cost = c;
-          t = moves[m];
+          t = moved;
           improved = true;
           break;
         }
@@ -203,9 +178,8 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
     }
     shift /= static_cast<double>(points.size());
     const glm::dvec2 moved = t + shift;
-    if (!within_cell(moved)) break;
-    if (!(bounds({moved})[0] < cost)) break;
-    const double c = exact_cost(points, normals, moved, faces, options_.prune ? cost : infinity);
+    if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) break;
+    const double c = exact_cost(points, normals, moved, faces);
     if (!(c < cost)) break;
     cost = c;
     t = moved;
@@ -240,10 +214,7 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::vector<int32_t> faces(points.size(), -1);  // warm starts
   for (size_t c : order) {
     if (options_.prune && bounds[c] > threshold(best)) break;
-    // A cost above the threshold joins no decision (best only falls), so its sum may stop early.
-    const double limit = options_.prune ? std::nextafter(threshold(best), std::numeric_limits<double>::infinity())
-                                        : std::numeric_limits<double>::infinity();
-    const double cost = exact_cost(points, normals, candidates[c], faces, limit);
+    const double cost = exact_cost(points, normals, candidates[c], faces);
     evaluated.emplace_back(c, cost);
     best = std::min(best, cost);
   }
@@ -271,8 +242,7 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   if (minima.size() > static_cast<size_t>(options_.max_refined)) minima.resize(options_.max_refined);
 
   std::vector<std::pair<glm::dvec2, double>> refined;
-  for (const auto& [cost, c] : minima)
-    refined.push_back(refine(points, normals, fpoints, fnormals, candidates[c], cost));
+  for (const auto& [cost, c] : minima) refined.push_back(refine(points, normals, candidates[c], cost));
 
   // The host decides: a seeded random pick among the near-best, as image quilting does.
   double best_refined = std::numeric_limits<double>::infinity();

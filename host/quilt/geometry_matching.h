@@ -15,7 +15,6 @@
 //! candidate exactly (`prune = false`, the reference). Exact costs use the same nearest-face
 //! lists, falling back to the Embree BVH where a list cannot decide.
 
-#include <limits>
 #include <memory>
 #include <random>
 #include <utility>
@@ -71,20 +70,15 @@ class GeometryMatcher {
 
  private:
   //! Eq. 3 with a warm start per point: `faces` (#P, -1 for none) holds faces to try first and
-  //! receives the minimizing faces. The result does not depend on the hints. Returns +infinity
-  //! instead as soon as the cost is certain to be at least `limit`.
+  //! receives the minimizing faces. The result does not depend on the hints.
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                    const glm::dvec2& translation, std::vector<int32_t>& faces,
-                    double limit = std::numeric_limits<double>::infinity()) const;
+                    const glm::dvec2& translation, std::vector<int32_t>& faces) const;
   //! Eq. 2 for one point moved into the swatch's frame, exact in double; `face` as above.
   double point_cost(const Vec3& q, const Vec3& normal, int32_t& face) const;
   //! The closest point of the swatch to q (ties to the lower face), exact in double.
   Vec3 closest_point(const Vec3& q) const;
   //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).
-  //! `fpoints` and `fnormals` are the points as the kernel takes them: a move is evaluated
-  //! exactly only when its lower bound leaves room to improve, which decides as evaluating it.
   std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                       const std::vector<glm::vec3>& fpoints, const std::vector<glm::vec3>& fnormals,
                                        const glm::dvec2& start, double cost) const;
 
   const TriMesh& swatch_;
