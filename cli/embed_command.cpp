@@ -37,14 +37,16 @@ void run_embed(const EmbedArgs& args) {
   check_texture_base(texture, base, args.base);
   const BaseSurface surface(base);
   std::unique_ptr<SurfaceEmbedding> embedding;
-  Shell shell;
+  int reduced_vertices = 0;
   if (args.embed == "shell" && texture.shell.height <= 0.0)
     throw InputError(args.texture + ": written with --embed normal, so it holds no shell map",
                      ExitCode::invalid_option);
   const bool shell_map = texture.shell.height > 0.0 && args.embed != "normal";
   if (shell_map) {
-    shell = build_shell(surface, texture.shell.height);
-    embedding = std::make_unique<ShellEmbedding>(surface, texture.shell, shell);
+    auto shell =
+        std::make_unique<ShellEmbedding>(surface, texture.shell, build_shell(surface, texture.shell.height));
+    reduced_vertices = shell->map().shell().reduced_vertices;
+    embedding = std::move(shell);
   } else {
     embedding = std::make_unique<NormalEmbedding>(surface);
   }
@@ -63,7 +65,7 @@ void run_embed(const EmbedArgs& args) {
                             {"faces", out.num_faces()},
                             {"vertices", out.num_vertices()},
                             {"embed", shell_map ? "shell" : "normal"},
-                            {"shell_reduced_vertices", shell.reduced_vertices},
+                            {"shell_reduced_vertices", reduced_vertices},
                             {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);

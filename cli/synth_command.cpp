@@ -166,7 +166,7 @@ void run_synth(const SynthArgs& args) {
     if (args.embed == "shell")
       options.embedding = [&](const BaseSurface& surface_base, double shell_height) {
         auto embedding = build_shell_embedding(*device, surface_base, shell_height, shell_options, &shell_report);
-        shell_texture = embedding->texture();
+        if (!args.write_texture.empty()) shell_texture = embedding->texture();
         return std::unique_ptr<SurfaceEmbedding>(std::move(embedding));
       };
     SurfaceQuiltStats stats;

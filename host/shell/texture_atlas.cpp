@@ -6,6 +6,8 @@
 #include <queue>
 #include <unordered_map>
 
+#include "mesh/topology.h"
+
 namespace meshquilt {
 namespace {
 
@@ -24,27 +26,14 @@ class AtlasBuilder {
   AtlasBuilder(const BaseSurface& base, const AtlasOptions& options) : base_(base), options_(options) {
     const TriMesh& mesh = base.mesh;
     const size_t faces = mesh.num_faces();
-    across_.assign(3 * faces, -1);
-    std::unordered_map<uint64_t, int32_t> first_use;
+    across_ = face_neighbors(mesh);  // prepared bases have no non-manifold edges (-2)
     base_boundary_.assign(mesh.num_vertices(), 0);
-    std::unordered_map<uint64_t, int> uses;
     for (size_t f = 0; f < faces; ++f)
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t a = static_cast<uint32_t>(mesh.triangles[f][k]);
-        const uint32_t b = static_cast<uint32_t>(mesh.triangles[f][(k + 1) % 3]);
-        const uint64_t key = (static_cast<uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-        ++uses[key];
-        const auto [it, fresh] = first_use.emplace(key, static_cast<int32_t>(3 * f + k));
-        if (!fresh) {
-          across_[3 * f + k] = it->second / 3;
-          across_[it->second] = static_cast<int32_t>(f);
+      for (int k = 0; k < 3; ++k)
+        if (across_[f][k] < 0) {
+          base_boundary_[mesh.triangles[f][k]] = 1;
+          base_boundary_[mesh.triangles[f][(k + 1) % 3]] = 1;
         }
-      }
-    for (const auto& [key, count] : uses)
-      if (count == 1) {
-        base_boundary_[key >> 32] = 1;
-        base_boundary_[key & 0xffffffffu] = 1;
-      }
     centroid_.resize(faces);
     for (size_t f = 0; f < faces; ++f) {
       const Tri& t = mesh.triangles[f];
@@ -88,7 +77,7 @@ class AtlasBuilder {
       face_stamp_[f] = stamp;
       for (int32_t v : mesh.triangles[f]) vertex_stamp_[v] = stamp;
       for (int k = 0; k < 3; ++k) {
-        const int32_t g = across_[3 * f + k];
+        const int32_t g = across_[f][k];
         if (g >= 0 && face_stamp_[g] != stamp && atlas_.face_chart[g] < 0)
           queue.emplace(glm::distance(centroid_[g], centroid_[seed]), g);
       }
@@ -101,7 +90,7 @@ class AtlasBuilder {
       // Stays a disk: one shared edge and a new third vertex, or two shared edges (a notch).
       int shared = 0, new_vertex = -1;
       for (int k = 0; k < 3; ++k) {
-        const int32_t h = across_[3 * g + k];
+        const int32_t h = across_[g][k];
         if (h >= 0 && face_stamp_[h] == stamp) ++shared;
       }
       for (int32_t v : mesh.triangles[g])
@@ -168,7 +157,7 @@ class AtlasBuilder {
   const BaseSurface& base_;
   AtlasOptions options_;
   TextureAtlas atlas_;
-  std::vector<int32_t> across_;  // 3 x #F face across each edge, -1 on the boundary
+  std::vector<std::array<int32_t, 3>> across_;  // face across each edge, -1 on the boundary
   std::vector<uint8_t> base_boundary_;
   std::vector<Vec3> centroid_;
   std::vector<int> face_stamp_, vertex_stamp_;
