@@ -344,9 +344,15 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     check_cancel();
     PlaneElement& target = layer[affected[partner->out_element]];
     representative[partner->in_element] = affected[partner->out_element];
+    // Unless the shape before would now pass through an element merged or deformed since: the
+    // deformed shape was tested against those, the one before was not.
     const auto restore_shape = [&] {
       std::vector<Vec3>& before = undeformed[partner->out_element];
       if (before.empty()) return;
+      TriMesh restored;
+      restored.positions = before;
+      restored.triangles = target.mesh.triangles;
+      if (collides(restored, affected[partner->out_element])) return;
       target.mesh.positions = std::move(before);
       forget(affected[partner->out_element]);
       target.bounds = xy_bounds(target.mesh);
