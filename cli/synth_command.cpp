@@ -176,6 +176,7 @@ void run_synth(const SynthArgs& args) {
     summary = quilt_summary(stats);
     summary["embed"] = args.embed;
     summary["intersecting_face_pairs"] = stats.intersecting_face_pairs;
+    summary["synthesis_map_elements"] = stats.synthesis_map_elements;
     if (args.embed == "shell") {
       summary["stretch_l2_initial"] = shell_report.stretch_initial;
       summary["stretch_l2_final"] = shell_report.stretch_final;

@@ -8,3 +8,4 @@ meshquilt_test(hole_tracker_test SOURCES hole_tracker_test.cpp LIBS meshquilt_qu
 meshquilt_test(surface_quilting_test SOURCES surface_quilting_test.cpp
   LIBS meshquilt_shell meshquilt_quilt meshquilt_inspect meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_engine
   LABELS end_to_end)
+meshquilt_test(element_placement_test SOURCES element_placement_test.cpp LIBS meshquilt_quilt meshquilt_spatial meshquilt_mesh)

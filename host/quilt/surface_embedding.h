@@ -21,6 +21,8 @@ class SurfaceEmbedding {
   virtual Vec3 position_during_synthesis(const SurfacePoint& point, double height) const {
     return position(point, height);
   }
+  //! Whether position_during_synthesis differs from position.
+  virtual bool has_synthesis_map() const { return false; }
 };
 
 //! Displacement along interpolated vertex normals (Figure 8, left).

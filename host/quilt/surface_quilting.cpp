@@ -11,6 +11,7 @@
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "quilt/broken_elements.h"
+#include "quilt/element_placement.h"
 #include "quilt/hole_tracker.h"
 #include "quilt/seed_finding.h"
 #include "quilt/stage_timer.h"
@@ -355,11 +356,29 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
   std::vector<TriMesh> embedded(elements.size());
   {
     StageTimer timer(seconds, "embed");
+    std::vector<LocalVertex> vertices;
+    std::vector<Tri> triangles;
+    std::vector<int32_t> face_element;
+    std::vector<size_t> placed;  // element of each placed one
     for (size_t e = 0; e < elements.size(); ++e) {
       if (!alive[e]) continue;
+      const auto first = static_cast<int32_t>(vertices.size());
+      vertices.insert(vertices.end(), elements[e].vertices.begin(), elements[e].vertices.end());
+      for (const Tri& t : elements[e].triangles) {
+        triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+        face_element.push_back(static_cast<int32_t>(placed.size()));
+      }
+      placed.push_back(e);
+    }
+    const ElementPlacement placement =
+        place_elements(*embedding, vertices, triangles, face_element, static_cast<int32_t>(placed.size()));
+    stats.synthesis_map_elements = placement.moved_elements;
+    size_t next = 0;
+    for (const size_t e : placed) {
       TriMesh& mesh = embedded[e];
-      for (const LocalVertex& v : elements[e].vertices)
-        mesh.positions.push_back(embedding->position(v.point, v.height));
+      mesh.positions.assign(placement.positions.begin() + static_cast<std::ptrdiff_t>(next),
+                            placement.positions.begin() + static_cast<std::ptrdiff_t>(next + elements[e].vertices.size()));
+      next += elements[e].vertices.size();
       mesh.triangles = elements[e].triangles;
     }
   }

@@ -55,6 +55,7 @@ struct SurfaceQuiltStats : QuiltStats {
   double covered_area = 0.0;   //!< base area of processed cells that are not holes
   double hole_area = 0.0;      //!< base area of hole cells
   int intersecting_face_pairs = 0;  //!< face pairs of different elements meeting, before clean-up
+  int synthesis_map_elements = 0;   //!< elements placed through the map synthesis decided on (place_elements)
 };
 
 //! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field).

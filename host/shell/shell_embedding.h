@@ -54,6 +54,7 @@ class ShellEmbedding final : public SurfaceEmbedding {
   Vec3 position_during_synthesis(const SurfacePoint& point, double height) const override {
     return original_.to_shell(point, height);
   }
+  bool has_synthesis_map() const override { return texture_.top_uv != texture_.atlas.uv; }
   const ShellMap& map() const { return map_; }
   const ShellTexture& texture() const { return texture_; }
 
