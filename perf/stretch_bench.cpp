@@ -2,7 +2,7 @@
 // line-search sweeps: where the minimization converges, and what it costs. Prints a Markdown
 // table of the normalized stretch and the seconds of the search, per shell height.
 //
-//   stretch_bench BASE [--height H]... [--sweeps N]...   (heights in base units)
+//   stretch_bench BASE [--height H]... [--sweeps N]... [--cone RADIANS]   (heights in base units)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -18,12 +18,14 @@
 int main(int argc, char** argv) {
   using namespace meshquilt;
   if (argc < 2) {
-    std::fprintf(stderr, "usage: stretch_bench BASE [--height H]... [--sweeps N]...\n");
+    std::fprintf(stderr, "usage: stretch_bench BASE [--height H]... [--sweeps N]... [--cone RADIANS]\n");
     return 2;
   }
   std::vector<double> heights;
   std::vector<int> sweeps;
+  AtlasOptions atlas_options;
   for (int i = 2; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--cone")) atlas_options.max_normal_angle = std::atof(argv[i + 1]);
     if (!std::strcmp(argv[i], "--height")) heights.push_back(std::atof(argv[i + 1]));
     if (!std::strcmp(argv[i], "--sweeps")) sweeps.push_back(std::atoi(argv[i + 1]));
   }
@@ -32,7 +34,7 @@ int main(int argc, char** argv) {
   const TriMesh base = prepare_base(read_mesh(argv[1]), argv[1]);
   const BaseSurface surface(base);
   auto device = engine::open_device(engine::BackendChoice::cpu);
-  const TextureAtlas atlas = build_texture_atlas(surface);
+  const TextureAtlas atlas = build_texture_atlas(surface, atlas_options);
   std::printf("%s: %d charts\n\n| shell height | sweeps | L2 stretch | excess removed | search (s) |\n"
               "|---|---|---|---|---|\n",
               argv[1], atlas.charts);
