@@ -1,8 +1,8 @@
 // Re-embedding against synthesis (Section 3.2 of the mesh quilting paper, last paragraph):
 // synthesizes the default chain mail over a base once through the shell map, then re-embeds the
 // same texture over the base bent, scaled and rigidly moved (the shell rebuilt over the edited
-// base, every output vertex mapped again by the rule synth and embed share) and prints the median seconds of each against the
-// synthesis, as a Markdown table.
+// base, every output vertex mapped again by the rule synth and embed share) and prints the median seconds of
+// each against the synthesis, as a Markdown table.
 //
 //   embed_bench BASE [--scale S] [--runs N]
 #include <algorithm>
@@ -90,8 +90,10 @@ int main(int argc, char** argv) {
   };
   std::printf("%s, default chain mail at --scale %g: %zu faces, synthesis %.1f s (one run)\n\n", argv[1],
               scale, quilt.mesh.num_faces(), synthesis);
-  std::printf("| edit | re-embedding (s, median of %d) | / synthesis | elements through the original map |\n"
-              "|---|---|---|---|\n", runs);
+  std::printf(
+      "| edit | re-embedding (s, median of %d) | / synthesis | elements through the original map |\n"
+      "|---|---|---|---|\n",
+      runs);
   int32_t elements = 0;
   for (const int32_t e : quilt.mesh.elements) elements = std::max(elements, e + 1);
   for (const Edit& edit : edits) {

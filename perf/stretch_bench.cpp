@@ -35,9 +35,10 @@ int main(int argc, char** argv) {
   const BaseSurface surface(base);
   auto device = engine::open_device(engine::BackendChoice::cpu);
   const TextureAtlas atlas = build_texture_atlas(surface, atlas_options);
-  std::printf("%s: %d charts\n\n| shell height | sweeps | L2 stretch | excess removed | search (s) |\n"
-              "|---|---|---|---|---|\n",
-              argv[1], atlas.charts);
+  std::printf(
+      "%s: %d charts\n\n| shell height | sweeps | L2 stretch | excess removed | search (s) |\n"
+      "|---|---|---|---|---|\n",
+      argv[1], atlas.charts);
   for (const double height : heights) {
     const Shell shell = build_shell(surface, height);
     const double initial = measure_stretch(ShellMap(surface, atlas, shell, atlas.uv)).l2;

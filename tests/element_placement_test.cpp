@@ -1,8 +1,9 @@
 // Elements into space: through the final map, except those that would meet another, which go
 // through the map synthesis decided on.
+#include "quilt/element_placement.h"
+
 #include <gtest/gtest.h>
 
-#include "quilt/element_placement.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -72,11 +73,13 @@ TEST(PlaceElements, ElementsThatWouldMeetGoThroughTheSynthesisMap) {
   EXPECT_EQ(e.pairs(placed.positions), 0u);
   for (size_t v = 0; v < e.vertices.size(); ++v) {
     const LocalVertex& l = e.vertices[v];
-    const Vec3 expected = v < 8 ? embedding.position_during_synthesis(l.point, l.height) : embedding.position(l.point, l.height);
+    const Vec3 expected = v < 8 ? embedding.position_during_synthesis(l.point, l.height)
+                                : embedding.position(l.point, l.height);
     EXPECT_EQ(placed.positions[v], expected) << v;
   }
   // The same inputs give the same positions.
-  EXPECT_EQ(place_elements(embedding, e.vertices, e.triangles, e.face_element, e.count).positions, placed.positions);
+  EXPECT_EQ(place_elements(embedding, e.vertices, e.triangles, e.face_element, e.count).positions,
+            placed.positions);
 }
 
 TEST(PlaceElements, AnEmbeddingWithoutASynthesisMapPlacesEverythingThroughItsMap) {

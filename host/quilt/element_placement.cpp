@@ -20,7 +20,8 @@ ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::ve
     for (int round = 0; round < rounds; ++round) {
       std::vector<uint8_t> moving(out.through_synthesis_map.size(), 0);
       bool any = false;
-      for (const auto& [a, b] : intersecting_face_pairs(mesh, face_element, IntersectionScope::different_elements))
+      for (const auto& [a, b] :
+           intersecting_face_pairs(mesh, face_element, IntersectionScope::different_elements))
         for (const int32_t e : {face_element[a], face_element[b]})
           if (!out.through_synthesis_map[e]) {
             moving[e] = out.through_synthesis_map[e] = 1;

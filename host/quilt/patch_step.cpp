@@ -344,8 +344,9 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     check_cancel();
     PlaneElement& target = layer[affected[partner->out_element]];
     representative[partner->in_element] = affected[partner->out_element];
-    // Unless the shape before would now pass through an element merged or deformed since: the
-    // deformed shape was tested against those, the one before was not.
+    // A partner left unmerged gets its shape from before the deformation back, unless that shape
+    // would now pass through an element merged or deformed since: the deformed shape was tested
+    // against those, the one before was not.
     const auto restore_shape = [&] {
       std::vector<Vec3>& before = undeformed[partner->out_element];
       if (before.empty()) return;

@@ -376,9 +376,9 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
     size_t next = 0;
     for (const size_t e : placed) {
       TriMesh& mesh = embedded[e];
-      mesh.positions.assign(placement.positions.begin() + static_cast<std::ptrdiff_t>(next),
-                            placement.positions.begin() + static_cast<std::ptrdiff_t>(next + elements[e].vertices.size()));
+      const auto begin = placement.positions.begin() + static_cast<std::ptrdiff_t>(next);
       next += elements[e].vertices.size();
+      mesh.positions.assign(begin, placement.positions.begin() + static_cast<std::ptrdiff_t>(next));
       mesh.triangles = elements[e].triangles;
     }
   }
