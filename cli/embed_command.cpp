@@ -1,7 +1,6 @@
 // `meshquilt embed --texture FILE --base MESH -o OUT`: places a layer written by
 // `synth --write-texture` over a base with the same connectivity (a pose, a sculpt, a scale of the
 // one it was made over) without synthesizing again (Section 3.2 of the paper, last paragraph).
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -53,10 +52,7 @@ void run_embed(const EmbedArgs& args) {
     embedding = std::make_unique<NormalEmbedding>(surface);
   }
   // The rule synth placed its elements by, so that the same base gives the same output.
-  int32_t elements = 0;
-  for (const int32_t e : texture.elements) elements = std::max(elements, e + 1);
-  ElementPlacement placement =
-      place_elements(*embedding, texture.vertices, texture.triangles, texture.elements, elements);
+  ElementPlacement placement = place_elements(*embedding, texture.vertices, texture.triangles, texture.elements);
   TriMesh out;
   out.positions = std::move(placement.positions);
   out.triangles = texture.triangles;
@@ -71,7 +67,7 @@ void run_embed(const EmbedArgs& args) {
                             {"vertices", out.num_vertices()},
                             {"embed", shell_map ? "shell" : "normal"},
                             {"shell_reduced_vertices", reduced_vertices},
-                            {"synthesis_map_elements", placement.moved_elements},
+                            {"synthesis_map_elements", placement.moved_elements()},
                             {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);

@@ -1,8 +1,8 @@
 // Re-embedding against synthesis (Section 3.2 of the mesh quilting paper, last paragraph):
 // synthesizes the default chain mail over a base once through the shell map, then re-embeds the
 // same texture over the base bent, scaled and rigidly moved (the shell rebuilt over the edited
-// base, every output vertex mapped again by the rule synth and embed share) and prints the median seconds of
-// each against the synthesis, as a Markdown table.
+// base, every output vertex mapped again by the rule synth and embed share) and prints the
+// median seconds of each against the synthesis, as a Markdown table.
 //
 //   embed_bench BASE [--scale S] [--runs N]
 #include <algorithm>
@@ -94,8 +94,6 @@ int main(int argc, char** argv) {
       "| edit | re-embedding (s, median of %d) | / synthesis | elements through the original map |\n"
       "|---|---|---|---|\n",
       runs);
-  int32_t elements = 0;
-  for (const int32_t e : quilt.mesh.elements) elements = std::max(elements, e + 1);
   for (const Edit& edit : edits) {
     TriMesh edited = base;
     for (Vec3& p : edited.positions) p = edit.apply(p, centre, extent);
@@ -106,9 +104,9 @@ int main(int argc, char** argv) {
       const BaseSurface edited_surface(edited);
       const ShellEmbedding embedding(edited_surface, texture, build_shell(edited_surface, texture.height));
       const ElementPlacement placed =
-          place_elements(embedding, quilt.local, quilt.mesh.triangles, quilt.mesh.elements, elements);
+          place_elements(embedding, quilt.local, quilt.mesh.triangles, quilt.mesh.elements);
       times.push_back(seconds_since(t0));
-      moved = std::max(moved, placed.moved_elements);
+      moved = std::max(moved, placed.moved_elements());
     }
     std::printf("| %s | %.3f | %.4f | %d |\n", edit.name, median(times), median(times) / synthesis, moved);
   }

@@ -67,8 +67,8 @@ TEST(PlaceElements, ElementsThatWouldMeetGoThroughTheSynthesisMap) {
   for (const LocalVertex& v : e.vertices) final_positions.push_back(embedding.position(v.point, v.height));
   ASSERT_GT(e.pairs(final_positions), 0u);  // the final map alone makes them meet
 
-  const ElementPlacement placed = place_elements(embedding, e.vertices, e.triangles, e.face_element, e.count);
-  EXPECT_EQ(placed.moved_elements, 2);
+  const ElementPlacement placed = place_elements(embedding, e.vertices, e.triangles, e.face_element);
+  EXPECT_EQ(placed.moved_elements(), 2);
   EXPECT_EQ(placed.through_synthesis_map, (std::vector<uint8_t>{1, 1, 0}));
   EXPECT_EQ(e.pairs(placed.positions), 0u);
   for (size_t v = 0; v < e.vertices.size(); ++v) {
@@ -78,15 +78,15 @@ TEST(PlaceElements, ElementsThatWouldMeetGoThroughTheSynthesisMap) {
     EXPECT_EQ(placed.positions[v], expected) << v;
   }
   // The same inputs give the same positions.
-  EXPECT_EQ(place_elements(embedding, e.vertices, e.triangles, e.face_element, e.count).positions,
+  EXPECT_EQ(place_elements(embedding, e.vertices, e.triangles, e.face_element).positions,
             placed.positions);
 }
 
 TEST(PlaceElements, AnEmbeddingWithoutASynthesisMapPlacesEverythingThroughItsMap) {
   const Elements e = three_tetrahedra();
   const SlidingEmbedding embedding(false);
-  const ElementPlacement placed = place_elements(embedding, e.vertices, e.triangles, e.face_element, e.count);
-  EXPECT_EQ(placed.moved_elements, 0);
+  const ElementPlacement placed = place_elements(embedding, e.vertices, e.triangles, e.face_element);
+  EXPECT_EQ(placed.moved_elements(), 0);
   for (size_t v = 0; v < e.vertices.size(); ++v)
     EXPECT_EQ(placed.positions[v], embedding.position(e.vertices[v].point, e.vertices[v].height));
   EXPECT_GT(e.pairs(placed.positions), 0u);  // nothing to fall back on: the clean-up's business

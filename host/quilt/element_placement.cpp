@@ -1,14 +1,21 @@
 #include "quilt/element_placement.h"
 
+#include <algorithm>
+
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
 
+int ElementPlacement::moved_elements() const {
+  return static_cast<int>(std::count(through_synthesis_map.begin(), through_synthesis_map.end(), 1));
+}
+
 ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::vector<LocalVertex>& vertices,
                                 const std::vector<Tri>& triangles, const std::vector<int32_t>& face_element,
-                                int32_t elements, int rounds) {
+                                int rounds) {
   ElementPlacement out;
-  out.through_synthesis_map.assign(static_cast<size_t>(elements), 0);
+  const int32_t last = face_element.empty() ? -1 : *std::max_element(face_element.begin(), face_element.end());
+  out.through_synthesis_map.assign(static_cast<size_t>(last + 1), 0);
   TriMesh mesh;
   mesh.triangles = triangles;
   mesh.positions.reserve(vertices.size());
@@ -32,7 +39,6 @@ ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::ve
         if (vertex_element[v] >= 0 && moving[vertex_element[v]])
           mesh.positions[v] = embedding.position_during_synthesis(vertices[v].point, vertices[v].height);
     }
-    for (const uint8_t m : out.through_synthesis_map) out.moved_elements += m;
   }
   out.positions = std::move(mesh.positions);
   return out;

@@ -17,17 +17,19 @@ namespace meshquilt {
 struct ElementPlacement {
   std::vector<Vec3> positions;                 //!< #V
   std::vector<uint8_t> through_synthesis_map;  //!< per element: placed by position_during_synthesis
-  int moved_elements = 0;                      //!< how many are
+
+  //! How many elements went through the synthesis map.
+  int moved_elements() const;
 };
 
 //! Places `vertices` (#V; each belongs to the element of the faces using it) of the elements
-//! `face_element` (#F, ids 0..elements-1) names: through embedding.position, then, where the
+//! `face_element` (#F, ids from 0) names: through embedding.position, then, where the
 //! embedding has a distinct synthesis map, every element that passes through another goes through
 //! position_during_synthesis instead, repeated while that changes something (at most `rounds`
 //! times). Deterministic: the same inputs give the same positions, so `meshquilt embed` over the
 //! base a texture was made on reproduces synth.
 ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::vector<LocalVertex>& vertices,
                                 const std::vector<Tri>& triangles, const std::vector<int32_t>& face_element,
-                                int32_t elements, int rounds = 4);
+                                int rounds = 4);
 
 }  // namespace meshquilt

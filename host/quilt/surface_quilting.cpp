@@ -370,9 +370,8 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
       }
       placed.push_back(e);
     }
-    const ElementPlacement placement =
-        place_elements(*embedding, vertices, triangles, face_element, static_cast<int32_t>(placed.size()));
-    stats.synthesis_map_elements = placement.moved_elements;
+    const ElementPlacement placement = place_elements(*embedding, vertices, triangles, face_element);
+    stats.synthesis_map_elements = placement.moved_elements();
     size_t next = 0;
     for (const size_t e : placed) {
       TriMesh& mesh = embedded[e];
