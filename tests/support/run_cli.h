@@ -2,6 +2,7 @@
 // Runs the built meshquilt executable for end-to-end tests.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -44,7 +45,10 @@ inline void write_file(const std::filesystem::path& file, const std::string& tex
 
 // A fresh empty folder under the system temp folder, named for the test.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("meshquilt_test_" + name);
+  // One per process: CTest runs each test of a suite as its own process, in parallel, and a
+  // shared folder let one process clear or rewrite files another was reading.
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("meshquilt_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
