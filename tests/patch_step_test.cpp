@@ -142,6 +142,21 @@ TEST_F(StepFixture, RefusedInputLeavesItsCellsUncovered) {
   EXPECT_TRUE(outcome.covers(grid, {6.0, 5.6}));
 }
 
+// On a surface a patch places only elements that lie wholly in it; one crossing its edge is left
+// for a later patch, so the cells under its part inside still need kept geometry: the swatch is
+// not empty there.
+TEST_F(StepFixture, ElementsLeftOutAtThePatchEdgeLeaveTheirCellsUncovered) {
+  const Rect2 domain{glm::dvec2(0.0), glm::dvec2(6.0, 16.0)};  // the yarns run from x = 4 to 8
+  std::vector<PlaneElement> layer;
+  PatchRequest request = request_at({4.0, 4.0}, domain);
+  request.whole_inputs_only = true;
+  const PatchOutcome outcome = run(layer, request);
+  EXPECT_EQ(outcome.inputs, 0);
+  EXPECT_TRUE(layer.empty());
+  EXPECT_FALSE(outcome.covers(grid, {4.6, 5.6})) << "under the middle yarn, inside the patch";
+  EXPECT_TRUE(outcome.covers(grid, {4.6, 4.85})) << "between yarns the swatch is empty";
+}
+
 // Over a curved base the plane is a chart: elements apart in it can meet in space (a patch that
 // wraps around a thin part, normals converging over a concave one). Here the chart folds at
 // x = 9, so a plate at x = 11 in the plane stands where the middle yarn goes in space (x = 6).

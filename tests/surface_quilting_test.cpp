@@ -355,10 +355,10 @@ TEST(SurfaceQuilting, WeftsFollowTheGuidanceField) {
   const double calm_degrees = calm_sum / std::max(1, calm) * 180.0 / M_PI;
   std::printf("wefts against the field: mean unsigned angle %.1f degrees over %d samples, %.1f over the %d where "
               "the field turns less than 45 degrees\n", mean_degrees, samples, calm_degrees, calm);
-  // Measured under the shell map: 10.8 away from singularities, 16.3 over all samples (the
-  // issue's bar is 15; seeds 2 and 3 give 14.9 and 19.2, so a bound below that would test the
-  // seed, not the field). Near a singularity no straight stretch of yarn follows the field.
-  EXPECT_LT(calm_degrees, 15.0) << calm << " samples";
+  // Measured under the shell map, seeds 1-6: 9.2-11.8 away from singularities, 13.6-17.1 over all
+  // samples (seed 1, this test: 9.6 and 16.0; the bar is 15, so a bound below 17 would
+  // test the seed, not the field). Near a singularity no straight stretch of yarn follows the field.
+  EXPECT_LT(calm_degrees, 13.0) << calm << " samples";
   EXPECT_GT(calm, samples / 2);
   EXPECT_LT(mean_degrees, 17.0) << samples << " samples";
 }
@@ -386,16 +386,14 @@ TEST_P(SharedBase, MeetsTheQualityBar) {
 
 // The teapot meets the bar through the shell map; under normal displacement its open rim and
 // handle put some vertices on the far side of the nearest base sheet (signed height -0.033).
-// The weave (the other swatch) covers 93.8% of the bunny and 96.8% of fertility (the bar
-// is 97%: yarns join into short runs across patch seams, with bare base between them), and on the
-// bunny deformed yarns rise 1.4% of the diagonal above the shell; measured bounds hold them.
+// The weave is the other swatch.
 INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
                          ::testing::Values(SharedCase{"bunny.off", 0.16, {}},
                                            SharedCase{"fertility.off", 0.16, {}},
                                            SharedCase{"head.off", 0.2, {}}, SharedCase{"knot2.off", 0.2, {}},
                                            SharedCase{"teapot.obj", 0.2, {}},
-                                           SharedCase{"bunny.off", 0.16, {0.02, -0.01, 0.93, 0.015}, Embed::shell, true},
-                                           SharedCase{"fertility.off", 0.16, {0.02, -0.01, 0.96}, Embed::shell, true}),
+                                           SharedCase{"bunny.off", 0.16, {}, Embed::shell, true},
+                                           SharedCase{"fertility.off", 0.16, {}, Embed::shell, true}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.')) + (info.param.weave ? "_weave" : "_chainmail");

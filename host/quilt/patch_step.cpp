@@ -47,7 +47,7 @@ void sub_patch_samples(const std::vector<PlaneElement>& layer, const Rect2& sub_
   }
 }
 
-// Marks the cells touched by each face's x-y bounding box.
+// Marks the cells touched by each face's x-y bounding box (clamped to the grid).
 void rasterize_faces(const TriMesh& m, const PlaneGrid& grid, std::vector<uint8_t>& cells) {
   for (const Tri& f : m.triangles) {
     const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &c = m.positions[f[2]];
@@ -76,9 +76,16 @@ std::vector<uint8_t> dilated(const std::vector<uint8_t>& cells, const PlaneGrid&
 // empty) at least some kept geometry. So a weft
 // that yielded to an output weft ending short of it leaves its cells uncovered even where warps
 // lie over them, and the driver seeds there again. Cells without swatch geometry are covered.
+// Swatch elements at the patch's translation that were left out (`left_out`: centred past the
+// domain's edge, or crossing a surface patch's edge) are accounted for where kept geometry lies
+// within half their width: a narrower bare strip along the plane's edge is what the centre rule
+// leaves, a wider one has room for an element. Without this, the cells under a yarn that did not
+// fit in a surface patch counted as covered and stayed bare (a tenth of the bunny under the
+// small weave).
 std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
-                                   const std::vector<int32_t>& representative, const Rect2& footprint,
-                                   const PlaneGrid& grid, const std::function<bool(const glm::dvec2&)>& inside_domain) {
+                                   const std::vector<int32_t>& representative, const std::vector<TriMesh>& left_out,
+                                   const Rect2& footprint, const PlaneGrid& grid,
+                                   const std::function<bool(const glm::dvec2&)>& inside_domain) {
   const size_t count = static_cast<size_t>(grid.nx) * grid.ny;
   std::vector<uint8_t> kept(count, 0), unaccounted(count, 0), covered(count, 0);
   for (const PlaneElement& e : layer)
@@ -104,6 +111,25 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
     const std::vector<uint8_t>& accounted = r >= 0 ? near_representative : near_kept;
     for (size_t k = 0; k < count; ++k)
       if (input[k] && !accounted[k]) unaccounted[k] = 1;
+  }
+  std::map<int, std::vector<uint8_t>> near_kept_within;  // kept geometry grown by r cells, by r
+  // One left out wholly past the grid marks the grid's border cells (rows and columns clamp): the
+  // swatch continues past that edge, so the edge too needs kept geometry near it. On the bunny
+  // with a guidance field this keeps wefts closer to the field over seeds 1-6 (mean angle 15.8
+  // degrees, 10.5 where the field is calm) than marking nothing (16.9, 13.1).
+  for (const TriMesh& m : left_out) {
+    const Rect2 b = xy_bounds(m);
+    const glm::dvec2 size = b.hi - b.lo;
+    const int r = std::max(1, static_cast<int>(0.5 * std::min(size.x, size.y) / grid.cell));
+    auto [it, fresh] = near_kept_within.try_emplace(r);
+    if (fresh) {
+      it->second = near_kept;
+      for (int i = 1; i < r; ++i) it->second = dilated(it->second, grid);
+    }
+    std::vector<uint8_t> input(count, 0);
+    rasterize_faces(m, grid, input);
+    for (size_t k = 0; k < count; ++k)
+      if (input[k] && !it->second[k]) unaccounted[k] = 1;
   }
   // A cell next to the footprint's edge is where the next patch's seam goes, unless the domain
   // ends there.
@@ -219,17 +245,24 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   const Rect2 footprint{t, t + swatch.extent};
   outcome.footprint = footprint;
 
-  // The new patch: swatch elements at t whose centre lies in the domain.
-  std::vector<TriMesh> inputs;
+  // The new patch: swatch elements at t whose centre lies in the domain (on a surface, that lie
+  // wholly in the patch). Those left out still lie over the patch's cells: the swatch is not
+  // empty there, so those cells need kept geometry near them to count as covered (see
+  // covered_cells), and a later patch seeded there places them.
+  std::vector<TriMesh> inputs, left_out;
   std::vector<int32_t> input_source;
   for (size_t k = 0; k < swatch.elements.size(); ++k) {
     const Rect2& b = swatch.element_bounds[k];
-    if (!request.inside_domain(0.5 * (b.lo + b.hi) + t)) continue;
     TriMesh placed_element = translated(swatch.elements[k], t);
-    if (request.whole_inputs_only &&
-        !std::all_of(placed_element.positions.begin(), placed_element.positions.end(),
-                     [&](const Vec3& p) { return request.inside_domain(glm::dvec2(p)); }))
+    const bool inside =
+        request.inside_domain(0.5 * (b.lo + b.hi) + t) &&
+        (!request.whole_inputs_only ||
+         std::all_of(placed_element.positions.begin(), placed_element.positions.end(),
+                     [&](const Vec3& p) { return request.inside_domain(glm::dvec2(p)); }));
+    if (!inside) {
+      left_out.push_back(std::move(placed_element));
       continue;
+    }
     inputs.push_back(std::move(placed_element));
     input_source.push_back(static_cast<int32_t>(k));
   }
@@ -434,7 +467,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     layer.push_back(std::move(added));
   }
   if (!request.account_per_input) representative.clear();
-  outcome.covered = covered_cells(layer, placed, representative, footprint, grid, request.inside_domain);
+  outcome.covered = covered_cells(layer, placed, representative, left_out, footprint, grid, request.inside_domain);
   return outcome;
 }
 

@@ -122,8 +122,10 @@ struct PatchOutcome {
   //! #grid cells: 1 where the patch covered the cell, that is, the cell lies inside the footprint
   //! shrunk by one cell and every placed input over it is accounted for: what stands for it in
   //! the layer (the element it was added as, merged into or yielded to; with
-  //! account_per_input false, any kept geometry) lies within a cell of it. Cells where the placed
-  //! swatch has no geometry are covered (a sparse swatch is mostly empty by design). A refused
+  //! account_per_input false, any kept geometry) lies within a cell of it; under a swatch element
+  //! left out at the domain's or the patch's edge, kept geometry within half its width. Cells
+  //! where the placed swatch has no geometry are covered (a sparse swatch is mostly empty by
+  //! design). A refused
   //! merge, a rejected input or an input that yielded to an element ending short of it leaves
   //! its cells uncovered, so the driver seeds there again.
   std::vector<uint8_t> covered;
