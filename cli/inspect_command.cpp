@@ -21,6 +21,7 @@ struct InspectArgs {
   std::filesystem::path swatch;
   std::filesystem::path base;
   bool plane = false;
+  std::vector<double> region;
   double shell_height = 0.0;
   bool json = false;
 };
@@ -43,6 +44,12 @@ void add_inspect_command(CLI::App& app) {
   auto* plane = cmd->add_flag("--plane", args->plane,
                               "coverage of the x-y footprint (2% margin) on a grid of half the median "
                               "element's x-y extent");
+  auto* region = cmd->add_option("--region", args->region,
+                                 "with --plane: cover this x-y rectangle X0,Y0,X1,Y1 (for example synth's "
+                                 "plane_rect) instead of the footprint; parts past it do not count")
+                     ->expected(4)
+                     ->delimiter(',');
+  region->needs(plane);
   auto* base = cmd->add_option("--base", args->base,
                                "base mesh: coverage of its area (within half the median element extent "
                                "of a vertex's foot) and signed heights in units of its bbox diagonal");
@@ -60,6 +67,8 @@ void add_inspect_command(CLI::App& app) {
     if (!args->base.empty()) base_mesh = read_mesh(args->base);
     InspectOptions options;
     options.plane = args->plane;
+    if (!args->region.empty())
+      options.plane_options.region = {{args->region[0], args->region[1]}, {args->region[2], args->region[3]}};
     options.mesh_name = args->mesh.string();
     options.swatch_name = args->swatch.string();
     options.base_name = args->base.string();

@@ -208,6 +208,7 @@ void run_synth(const SynthArgs& args) {
     result = quilt_plane(swatch, *device, options, &stats);
     summary = quilt_summary(stats);
     summary["plane"] = {width, height};
+    summary["plane_rect"] = {0.0, 0.0, stats.plane_extent.x, stats.plane_extent.y};
   }
 
   const auto write_start = Clock::now();

@@ -143,6 +143,21 @@ bool one_line_naming(const std::string& err, const std::string& name) {
   return !err.empty() && err.find('\n') == err.size() - 1 && err.find(name) != std::string::npos;
 }
 
+// --region measures the rectangle given (synth's plane_rect) instead of the footprint: a ring
+// covering x-y [-1.25, 1.25]^2 on cells of 1.25 (half its extent) over a rectangle 10 x 2.5
+// whose cell edges lie at -0.625 and 0.625 touches 3 of its 8 columns.
+TEST_F(InspectCli, RegionReplacesTheFootprint) {
+  const fs::path ring_file = dir_ / "ring.ply";
+  write_mesh(torus({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 64, 12), ring_file);
+  const CliRun wide = run({ring_file.string(), "--plane", "--region", "-1.875,-1.25,8.125,1.25", "--json"});
+  ASSERT_EQ(wide.code, 0) << wide.err;
+  EXPECT_NEAR(nlohmann::json::parse(wide.out).at("coverage").get<double>(), 3.0 / 8.0, 1e-12);
+  EXPECT_EQ(run({ring_file.string(), "--region", "0,0,1,1"}).code, 2);  // needs --plane
+  const CliRun empty = run({ring_file.string(), "--plane", "--region", "0,0,0,1"});
+  EXPECT_EQ(empty.code, 6);  // ExitCode::invalid_option
+  EXPECT_TRUE(one_line_naming(empty.err, "region")) << empty.err;
+}
+
 TEST_F(InspectCli, BrokenAndMissingFilesGiveOneLineErrors) {
   const fs::path broken = dir_ / "broken.off";
   std::ofstream(broken) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";  // truncated

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "error.h"
 #include "inspect/coverage.h"
 #include "inspect/element_statistics.h"
 #include "inspect/inspect_report.h"
@@ -125,6 +126,22 @@ TEST(PlaneCoverage, FullAndHalfCoveredPlane) {
   EXPECT_NEAR(half.plane->coverage, 0.5, 0.05);
   EXPECT_GT(half.plane->largest_gap, 0.4);
   EXPECT_LT(half.plane->largest_gap, 0.5);
+}
+
+// A region replaces the footprint: the same rings measured over the plane they were meant to
+// cover, twice as wide as they are, and over a region inside them.
+TEST(PlaneCoverage, RegionReplacesTheFootprint) {
+  const TriMesh rings = ring_field([](int, int) { return true; });  // x-y from 0.05 to 19.85
+  PlaneCoverageOptions options;
+  options.region = {glm::dvec2(0.05), glm::dvec2(0.05 + 2 * 19.8, 19.85)};
+  const PlaneCoverage wide = plane_coverage(rings, 0.55, options);
+  EXPECT_EQ(wide.cells_x, 72);  // 39.6 / 0.55
+  EXPECT_EQ(wide.cells_y, 36);
+  EXPECT_NEAR(wide.coverage, 0.5, 0.02);  // the rings' half, and the column touching its edge
+  options.region = {glm::dvec2(5.0), glm::dvec2(10.0)};
+  EXPECT_GT(plane_coverage(rings, 0.55, options).coverage, 0.99);
+  options.region = {glm::dvec2(5.0), glm::dvec2(5.0, 10.0)};
+  EXPECT_THROW(plane_coverage(rings, 0.55, options), InputError);
 }
 
 // Reference overlap of a triangle's x-y projection with a box, without separating axes: a

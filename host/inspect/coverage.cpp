@@ -67,6 +67,12 @@ PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneC
   const glm::dvec2 size = hi - lo;
   lo += options.margin * size;
   hi -= options.margin * size;
+  if (options.region) {
+    lo = options.region->first;
+    hi = options.region->second;
+    if (!(hi.x > lo.x && hi.y > lo.y) || !std::isfinite(lo.x + lo.y + hi.x + hi.y))
+      throw InputError("plane coverage: the region is empty or not finite", ExitCode::invalid_option);
+  }
   const glm::dvec2 inner = glm::max(hi - lo, glm::dvec2(0.0));
   auto cells_along = [&](double length, double cell) {
     return static_cast<int64_t>(std::max(1.0, std::round(length / cell)));

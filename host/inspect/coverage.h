@@ -4,7 +4,10 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "mesh/tri_mesh.h"
 
@@ -12,6 +15,9 @@ namespace meshquilt {
 
 struct PlaneCoverageOptions {
   double margin = 0.02;            //!< fraction of the bbox width/height removed on each side
+  //! Measure this x-y rectangle (lo, hi) instead of the shrunk bounding box, for example the plane
+  //! a synthesis was asked to cover (synth's `plane_rect`): parts hanging past it do not count.
+  std::optional<std::pair<glm::dvec2, glm::dvec2>> region;
   int64_t max_cells = 1 << 24;     //!< the cell size grows when the grid would have more cells
 };
 
@@ -23,7 +29,7 @@ struct PlaneCoverage {
 };
 
 //! Coverage of the x-y footprint of the mesh's bounding box (shrunk by options.margin of its
-//! width and height on each side) on a grid of about `cell_size` square cells (the count along
+//! width and height on each side; or options.region) on a grid of about `cell_size` square cells (the count along
 //! each axis is rounded so the cells tile the footprint exactly): a cell is covered when the x-y
 //! projection of some triangle overlaps it (closed sets, separating-axis test). With cell_size
 //! half the median element's x-y extent, the hole inside a ring is no gap but a missing element

@@ -55,6 +55,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   const int total_cells = grid.nx * grid.ny;
   stats.cells = total_cells;
   stats.cell_size = cell;
+  stats.plane_extent = domain.hi;
 
   MatchingOptions matching = options.matching;
   matching.lambda = options.lambda / swatch.mean_edge;

@@ -52,6 +52,7 @@ struct QuiltStats {
   int holes = 0;                  //!< connected groups of cells left uncovered after seed_attempts patches
   int hole_cells = 0;             //!< cells in holes
   double largest_hole_area = 0.0; //!< area of the largest hole (plane units, or base units for surfaces)
+  glm::dvec2 plane_extent{0.0};   //!< planar synthesis: the plane covered is [0, plane_extent] in x-y
   std::map<std::string, double> stage_seconds;  //!< seed, match, correspondence, deform, merge, cleanup
 };
 
