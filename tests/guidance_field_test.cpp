@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -165,8 +166,11 @@ TEST(GuidanceField, OnlyTheDirectionOfAConstraintMatters) {
 }
 
 TEST(GuidanceField, MatchesADenseSolveOfTheDocumentedSystem) {
-  // Uniform vector Laplacian over edges with the constrained vertices held (as unit tangents), plus
-  // `regularization` x (d - default); then projected and normalized per vertex.
+  // Directions d_v in the vertices' tangent planes minimizing sum over edges |d_v - d_w|^2 plus
+  // `regularization` x sum |d_v - default_v|^2, the constrained vertices held (as unit tangents);
+  // then normalized. Solved here in a tangent basis of this test's own choosing (the minimizer does
+  // not depend on it): setting the gradient to zero gives, per free vertex v and basis vector a,
+  // (deg v + eps) x_va - sum over free w, b of (t_va . t_wb) x_wb = eps t_va . default_v + sum over held w of t_va . d_w.
   const TriMesh mesh = ellipsoid();
   const BaseSurface base(mesh);
   const double eps = 0.05;
@@ -185,31 +189,70 @@ TEST(GuidanceField, MatchesADenseSolveOfTheDocumentedSystem) {
     }
   std::map<int, Vec3> held;  // each constraint held as its unit tangent direction
   for (const auto& c : constraints) held[c.vertex] = tangent_unit(c.direction, normals[c.vertex]);
+  std::vector<std::array<Vec3, 2>> basis(n);
+  for (size_t v = 0; v < n; ++v) {
+    const Vec3 t1 = glm::normalize(glm::cross(normals[v], glm::normalize(Vec3(0.3, -0.5, 0.8))));
+    basis[v] = {t1, glm::cross(normals[v], t1)};
+  }
   std::vector<int> column(n, -1);
   int unknowns = 0;
   for (size_t v = 0; v < n; ++v)
-    if (!held.count(static_cast<int>(v))) column[v] = unknowns++;
-  std::vector<std::vector<double>> a(unknowns, std::vector<double>(unknowns, 0.0));
-  std::vector<Vec3> b(unknowns, Vec3(0.0));
+    if (!held.count(static_cast<int>(v))) column[v] = 2 * unknowns++;
+  std::vector<std::vector<double>> a(2 * unknowns, std::vector<double>(2 * unknowns, 0.0));
+  std::vector<Vec3> b(2 * unknowns, Vec3(0.0));  // the right-hand side in .x
   for (size_t v = 0; v < n; ++v) {
     if (column[v] < 0) continue;
     std::sort(neighbours[v].begin(), neighbours[v].end());
     neighbours[v].erase(std::unique(neighbours[v].begin(), neighbours[v].end()), neighbours[v].end());
-    a[column[v]][column[v]] = static_cast<double>(neighbours[v].size()) + eps;
     const Vec3 fallback = field.axis - glm::dot(field.axis, normals[v]) * normals[v];
-    b[column[v]] = eps * fallback;
-    for (int w : neighbours[v]) {
-      if (column[w] >= 0)
-        a[column[v]][column[w]] -= 1.0;
-      else
-        b[column[v]] += held[w];
+    for (int i = 0; i < 2; ++i) {
+      a[column[v] + i][column[v] + i] = static_cast<double>(neighbours[v].size()) + eps;
+      b[column[v] + i].x = eps * glm::dot(basis[v][i], fallback);
+      for (int w : neighbours[v]) {
+        if (column[w] >= 0) {
+          for (int j = 0; j < 2; ++j) a[column[v] + i][column[w] + j] -= glm::dot(basis[v][i], basis[w][j]);
+        } else {
+          b[column[v] + i].x += glm::dot(basis[v][i], held[w]);
+        }
+      }
     }
   }
   const std::vector<Vec3> x = dense_solve(a, b);
   for (size_t v = 0; v < n; ++v) {
-    const Vec3 raw = column[v] >= 0 ? x[column[v]] : held[static_cast<int>(v)];
+    const Vec3 raw = column[v] >= 0 ? x[column[v]].x * basis[v][0] + x[column[v] + 1].x * basis[v][1]
+                                    : held[static_cast<int>(v)];
     EXPECT_NEAR(glm::length(field.directions[v] - tangent_unit(raw, normals[v])), 0.0, 1e-8) << v;
   }
+}
+
+// Two directions on opposite sides of a cylinder, both running around it. Averaged in 3D they are
+// opposite, so halfway round a solve in space finds nothing to follow; within the tangent planes
+// they agree (running around a cylinder is parallel transport), so the field runs around it
+// everywhere.
+TEST(GuidanceField, DirectionsSpreadAlongTheSurfaceNotThroughSpace) {
+  TriMesh mesh;
+  const int around = 24, rings = 6;
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double angle = 2.0 * M_PI * i / around;
+      mesh.positions.emplace_back(std::cos(angle), std::sin(angle), 0.5 * j);
+    }
+  for (int j = 0; j + 1 < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const int p = j * around + i, q = j * around + (i + 1) % around, r = p + around, s = q + around;
+      mesh.triangles.push_back({p, q, s});
+      mesh.triangles.push_back({p, s, r});
+    }
+  const BaseSurface base(mesh);
+  const std::vector<FieldConstraint> constraints{{2 * around, Vec3(0.0, 1.0, 0.0)},
+                                                 {2 * around + around / 2, Vec3(0.0, -1.0, 0.0)}};
+  const GuidanceField field = interpolate_field(base, constraints);
+  double worst = 1.0;
+  for (size_t v = 0; v < mesh.num_vertices(); ++v) {
+    const Vec3& p = mesh.positions[v];
+    worst = std::min(worst, std::abs(glm::dot(field.directions[v], glm::normalize(Vec3(-p.y, p.x, 0.0)))));
+  }
+  EXPECT_GT(worst, 0.99);
 }
 
 TEST(GuidanceField, DefaultFieldOnASphereIsSmoothAwayFromItsSingularities) {

@@ -355,12 +355,12 @@ TEST(SurfaceQuilting, WeftsFollowTheGuidanceField) {
   const double calm_degrees = calm_sum / std::max(1, calm) * 180.0 / M_PI;
   std::printf("wefts against the field: mean unsigned angle %.1f degrees over %d samples, %.1f over the %d where "
               "the field turns less than 45 degrees\n", mean_degrees, samples, calm_degrees, calm);
-  // Measured under the shell map, seeds 1-6: 9.2-11.8 away from singularities, 13.6-17.1 over all
-  // samples (seed 1, this test: 9.6 and 16.0; the bar is 15, so a bound below 17 would
-  // test the seed, not the field). Near a singularity no straight stretch of yarn follows the field.
-  EXPECT_LT(calm_degrees, 13.0) << calm << " samples";
+  // Measured under the shell map, seeds 1-3: 9.9, 10.2 and 12.7 over all samples, 7.2-9.6 away
+  // from singularities (when the field was solved in space rather than in the tangent planes:
+  // 13.6-17.1). Near a singularity no straight stretch of yarn follows the field.
+  EXPECT_LT(calm_degrees, 11.0) << calm << " samples";
   EXPECT_GT(calm, samples / 2);
-  EXPECT_LT(mean_degrees, 17.0) << samples << " samples";
+  EXPECT_LT(mean_degrees, 15.0) << samples << " samples";
 }
 
 // Real bases from ../shared: a closed scan, genus 4, an open base, two components, the teapot.

@@ -1,6 +1,7 @@
 #include "quilt/guidance_field.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -166,38 +167,49 @@ GuidanceField interpolate_field(const BaseSurface& base, const std::vector<Field
       const Vec3 t = tangent_part(d, n);
       held[k] = glm::length(t) > 1e-12 ? glm::normalize(t) : any_tangent(n);
     }
+    // Two unknowns per free vertex: its direction in a basis (t1, t2) of its tangent plane. A
+    // neighbour's direction enters projected to this plane, t_i^T t_j (symmetric, so the system
+    // is too, and positive definite with a vertex held).
+    std::vector<std::array<Vec3, 2>> basis(n);
+    for (size_t v = 0; v < n; ++v) {
+      const Vec3 t1 = any_tangent(base.vertex_normals[v]);
+      basis[v] = {t1, glm::cross(base.vertex_normals[v], t1)};
+    }
     std::vector<int32_t> column(n, -1);
     int32_t unknowns = 0;
     for (size_t v = 0; v < n; ++v)
-      if (fixed[v] < 0) column[v] = unknowns++;
-    // (L + eps I) d = eps d_default, with held vertices moved to the right-hand side.
+      if (fixed[v] < 0) column[v] = 2 * unknowns++;
+    // (L_tangent + eps I) x = eps x_default, with held vertices moved to the right-hand side.
     std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(unknowns, 3);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * unknowns);
     for (size_t v = 0; v < n; ++v) {
       if (column[v] < 0) continue;
       std::vector<int32_t> neighbours;
       for (const auto& [w, length] : base.edges[v]) neighbours.push_back(w);
       std::sort(neighbours.begin(), neighbours.end());
       neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-      triplets.emplace_back(column[v], column[v], static_cast<double>(neighbours.size()) + regularization);
-      for (int c = 0; c < 3; ++c) rhs(column[v], c) += regularization * fallback[v][c];
-      for (int32_t w : neighbours) {
-        if (column[w] >= 0) {
-          triplets.emplace_back(column[v], column[w], -1.0);
-        } else {
-          for (int c = 0; c < 3; ++c) rhs(column[v], c) += held[fixed[w]][c];
+      for (int a = 0; a < 2; ++a) {
+        triplets.emplace_back(column[v] + a, column[v] + a, static_cast<double>(neighbours.size()) + regularization);
+        rhs(column[v] + a) += regularization * glm::dot(basis[v][a], fallback[v]);
+        for (int32_t w : neighbours) {
+          if (column[w] >= 0) {
+            for (int b = 0; b < 2; ++b)
+              triplets.emplace_back(column[v] + a, column[w] + b, -glm::dot(basis[v][a], basis[w][b]));
+          } else {
+            rhs(column[v] + a) += glm::dot(basis[v][a], held[fixed[w]]);
+          }
         }
       }
     }
     if (unknowns > 0) {
-      Eigen::SparseMatrix<double> A(unknowns, unknowns);
+      Eigen::SparseMatrix<double> A(2 * unknowns, 2 * unknowns);
       A.setFromTriplets(triplets.begin(), triplets.end());
       Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
       if (solver.info() != Eigen::Success) throw SolverError("guidance field: factorization failed");
-      const Eigen::MatrixXd x = solver.solve(rhs);
+      const Eigen::VectorXd x = solver.solve(rhs);
       if (solver.info() != Eigen::Success || !x.allFinite()) throw SolverError("guidance field: solve failed");
       for (size_t v = 0; v < n; ++v)
-        if (column[v] >= 0) raw[v] = Vec3(x(column[v], 0), x(column[v], 1), x(column[v], 2));
+        if (column[v] >= 0) raw[v] = x(column[v]) * basis[v][0] + x(column[v] + 1) * basis[v][1];
     }
     for (size_t v = 0; v < n; ++v)
       if (fixed[v] >= 0) raw[v] = held[fixed[v]];

@@ -41,10 +41,13 @@ struct GuidanceField {
   Vec3 at(const BaseSurface& base, const SurfacePoint& p) const;
 };
 
-//! Spreads the constraints over the base: the vector Laplacian (uniform weights over edges) is
-//! minimized with the constrained vertices held at their directions' unit tangent parts (a
-//! direction's length does not matter), plus a weak pull (weight `regularization`) toward the
-//! default field; the result is projected to each vertex's tangent plane and normalized.
+//! Spreads the constraints over the base: directions d_v, each in its vertex's tangent plane,
+//! minimize the sum over edges of |d_v - d_w|^2 (Turk's diffusion with tangent-plane projection,
+//! solved at once: two unknowns per vertex, one sparse solve) with the constrained vertices held at
+//! their directions' unit tangent parts (a direction's length does not matter), plus a weak pull
+//! (weight `regularization`) toward the default field; each is then normalized. Directions spread
+//! along the surface, not through space: two given on opposite sides of a body, both running round
+//! it, agree (a vector Laplacian in space would average them to nothing halfway round).
 //! The default field (all of it without constraints, and what unconstrained components follow) is
 //! the base's principal axis (largest variance of its area-weighted vertices) projected to each
 //! tangent plane: smooth and coherent, it runs along the object's length, and its singularities
