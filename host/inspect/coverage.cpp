@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <tuple>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -55,23 +56,26 @@ PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneC
   if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
     throw InputError("plane coverage: cell size " + std::to_string(cell_size) + " is not positive", ExitCode::invalid_option);
   }
+  if (options.region) {
+    const auto& [a, b] = *options.region;
+    if (!(b.x > a.x && b.y > a.y) || !std::isfinite(a.x + a.y + b.x + b.y))
+      throw InputError("plane coverage: the region is empty or not finite", ExitCode::invalid_option);
+  }
   PlaneCoverage out;
   if (mesh.num_faces() == 0) return out;
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const Tri& t : mesh.triangles) {
-    for (int32_t v : t) {
-      lo = glm::min(lo, glm::dvec2(mesh.positions[v]));
-      hi = glm::max(hi, glm::dvec2(mesh.positions[v]));
-    }
-  }
-  const glm::dvec2 size = hi - lo;
-  lo += options.margin * size;
-  hi -= options.margin * size;
   if (options.region) {
-    lo = options.region->first;
-    hi = options.region->second;
-    if (!(hi.x > lo.x && hi.y > lo.y) || !std::isfinite(lo.x + lo.y + hi.x + hi.y))
-      throw InputError("plane coverage: the region is empty or not finite", ExitCode::invalid_option);
+    std::tie(lo, hi) = *options.region;
+  } else {
+    for (const Tri& t : mesh.triangles) {
+      for (int32_t v : t) {
+        lo = glm::min(lo, glm::dvec2(mesh.positions[v]));
+        hi = glm::max(hi, glm::dvec2(mesh.positions[v]));
+      }
+    }
+    const glm::dvec2 size = hi - lo;
+    lo += options.margin * size;
+    hi -= options.margin * size;
   }
   const glm::dvec2 inner = glm::max(hi - lo, glm::dvec2(0.0));
   auto cells_along = [&](double length, double cell) {

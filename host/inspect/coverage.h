@@ -29,8 +29,8 @@ struct PlaneCoverage {
 };
 
 //! Coverage of the x-y footprint of the mesh's bounding box (shrunk by options.margin of its
-//! width and height on each side; or options.region) on a grid of about `cell_size` square cells (the count along
-//! each axis is rounded so the cells tile the footprint exactly): a cell is covered when the x-y
+//! width and height on each side), or of options.region, on a grid of about `cell_size` square
+//! cells (the count along each axis is rounded so the cells tile the footprint exactly): a cell is covered when the x-y
 //! projection of some triangle overlaps it (closed sets, separating-axis test). With cell_size
 //! half the median element's x-y extent, the hole inside a ring is no gap but a missing element
 //! is. \throw InputError when cell_size is not positive and finite.
