@@ -40,13 +40,18 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   }
   bvh_ = std::make_unique<FaceBvh>(swatch_);
   // Voxels of 3/4 of a mean edge (coarser past 2^18 voxels) listing the faces within 1.5 mean
-  // edges past the voxel's diagonal, up to 128: with the drivers' lambda = 1 / mean edge, the
-  // cap 1 + lambda * reach then exceeds what most points cost even where the normals disagree,
-  // so the bound equals Eq. 2 for most pairs and the host rarely needs the BVH. Shorter lists
-  // (1 mean edge, or 64 faces) made the default jobs twice as slow. A point 3 mean edges from
-  // the swatch costs at least 4 whatever its normal; its voxel lists nothing.
+  // edges past the voxel's diagonal: with the drivers' lambda = 1 / mean edge, the cap
+  // 1 + lambda * reach then exceeds what most points cost even where the normals disagree, so
+  // the bound equals Eq. 2 for most pairs and the host rarely needs the BVH. Shorter lists
+  // (1 mean edge, or 64 faces) made the default jobs twice as slow. Up to 256 faces on a small
+  // swatch, whose interlocking rings crowd more than 128 into a voxel's reach (the built-in
+  // chain mail: BVH searches 663 K -> 67 K, a third off the matching), 128 past 8,192 faces,
+  // where 256 nearly doubled peak memory for no time saved. A point 3 mean edges from the
+  // swatch costs at least 4 whatever its normal; its voxel lists nothing.
   const double mean_edge = std::max(mean_edge_length(swatch), 1e-12);
-  grid_ = build_near_face_grid(swatch, 0.75 * mean_edge, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, 128, int64_t{1} << 18);
+  const int max_list = swatch.num_faces() <= 8192 ? 256 : 128;
+  grid_ = build_near_face_grid(swatch, 0.75 * mean_edge, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
+                               int64_t{1} << 18);
 
   MatchingSwatch device_swatch;
   device_swatch.positions.reserve(swatch.num_vertices());
