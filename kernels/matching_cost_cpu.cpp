@@ -23,19 +23,19 @@ float segment_distance2(vec3 p, vec3 a, vec3 b) {
   return glm::dot(d, d);
 }
 
-// The shader's branch-free distance: to the plane when p projects inside, else to the nearest
-// edge; edges only for a degenerate triangle.
+// The shader's distance: to the plane when p projects inside, else to the nearest edge; edges
+// only for a degenerate triangle. The shader computes both and selects, so that SIMD lanes never
+// diverge; here a branch skips the edges when the plane decides (inside, the plane is the
+// nearest, up to rounding that the bound's margin covers).
 float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate) {
   const vec3 n = glm::cross(b - a, c - a);
   const float nn = glm::dot(n, n);
-  const float u = glm::dot(glm::cross(b - p, c - p), n);
-  const float v = glm::dot(glm::cross(c - p, a - p), n);
-  const float w = glm::dot(glm::cross(a - p, b - p), n);
-  const float h = glm::dot(p - a, n);
-  const float plane2 = h * h / std::max(nn, 1e-30f);
-  const float edge2 = std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
-  const bool inside = !degenerate && nn > 0.0f && u >= 0.0f && v >= 0.0f && w >= 0.0f;
-  return inside ? std::min(plane2, edge2) : edge2;
+  if (!degenerate && nn > 0.0f && glm::dot(glm::cross(b - p, c - p), n) >= 0.0f &&
+      glm::dot(glm::cross(c - p, a - p), n) >= 0.0f && glm::dot(glm::cross(a - p, b - p), n) >= 0.0f) {
+    const float h = glm::dot(p - a, n);
+    return h * h / nn;
+  }
+  return std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
 }
 
 struct Swatch {
