@@ -6,9 +6,8 @@
 //
 // Columns: coverage (inspect's element-scale plane coverage and its cell size), the same
 // coverage on cells sized from the swatch (the smallest whole fraction of its longer side at
-// which the swatch covers itself at four grid phases) over the plane's body (face centroids' 2nd to 98th
-// percentiles in x and y, so elements sticking out past the border do not count as gaps), closed
-// share
+// which the swatch covers itself at four grid phases), both over the plane asked for (synth's
+// `plane_rect`, so elements hanging past its edges neither help nor hurt), closed share
 // (closed / all output elements), intersecting share (an upper bound: 2 x intersecting face pairs,
 // between and within elements, over faces), dropped share (dropped / (kept + dropped) elements),
 // holes, the longest output element in swatch lengths (its longer x-y side over the swatch's),
@@ -128,11 +127,17 @@ int main(int argc, char** argv) {
         ++misses;
         continue;
       }
-      if (meshquilt::perf::run_child({cli, "inspect", out.string(), "--plane", "--swatch", swatch.string(), "--json"}, report.string()) != 0) {
+      // Both coverages are of the plane asked for (synth's plane_rect): elements hanging past its
+      // edges by differing lengths neither help nor hurt.
+      const auto s = nlohmann::json::parse(std::ifstream(stats));
+      const std::vector<double> rect = s.at("plane_rect").get<std::vector<double>>();
+      char region[256];
+      std::snprintf(region, sizeof region, "%.17g,%.17g,%.17g,%.17g", rect[0], rect[1], rect[2], rect[3]);
+      if (meshquilt::perf::run_child({cli, "inspect", out.string(), "--plane", "--region", region, "--swatch", swatch.string(), "--json"},
+                                     report.string()) != 0) {
         std::fprintf(stderr, "quality_suite: inspecting %s failed\n", name.c_str());
         return 1;
       }
-      const auto s = nlohmann::json::parse(std::ifstream(stats));
       const auto r = nlohmann::json::parse(std::ifstream(report));
       const double faces = r["faces"].get<double>();
       const double elements = r["elements"].get<double>();
@@ -150,9 +155,9 @@ int main(int argc, char** argv) {
       const meshquilt::TriMesh output = meshquilt::read_mesh(out);
       const std::vector<double> lengths = element_lengths(output);
       const double cell = meshquilt::self_covering_cell(swatch_mesh, swatch_length);
-      meshquilt::PlaneCoverageOptions no_margin;
-      no_margin.margin = 0.0;
-      const double fine_coverage = meshquilt::plane_coverage(meshquilt::plane_body(output), cell, no_margin).coverage;
+      meshquilt::PlaneCoverageOptions plane_asked;
+      plane_asked.region = {glm::dvec2(rect[0], rect[1]), glm::dvec2(rect[2], rect[3])};
+      const double fine_coverage = meshquilt::plane_coverage(output, cell, plane_asked).coverage;
       const double longest = lengths.empty() ? 0.0 : *std::max_element(lengths.begin(), lengths.end()) / swatch_length;
 
       std::vector<std::string> missed;

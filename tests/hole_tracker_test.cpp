@@ -102,7 +102,7 @@ TEST(HoleTracker, NoHolesGiveAnEmptySummary) {
 }
 
 TEST(GridNeighbours, MatchTheEightNeighbourhood) {
-  for (const auto [nx, ny] : {std::pair{1, 1}, std::pair{5, 1}, std::pair{4, 7}}) {
+  for (const auto& [nx, ny] : {std::pair{1, 1}, std::pair{5, 1}, std::pair{4, 7}}) {
     const auto neighbours = grid_neighbours(nx, ny);
     ASSERT_EQ(neighbours.size(), static_cast<size_t>(nx * ny));
     for (int c = 0; c < nx * ny; ++c) {

@@ -33,6 +33,8 @@ class HoleTracker {
                       const std::vector<double>& cell_areas = {}) const;
 
   const std::vector<uint8_t>& hole_cells() const { return hole_; }
+  //! Patches seeded on `cell` so far.
+  int tries(int cell) const { return tries_[cell]; }
 
  private:
   SeedFinder& seeds_;

@@ -69,7 +69,15 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   std::vector<PlaneElement> layer;
   PatchRequest request;
   request.grid = grid;
-  request.inside_domain = [&domain](const glm::dvec2& p) { return domain.contains(p); };
+  // A patch seeded again on a cell it could not cover also places elements centred up to a
+  // quarter of an element past the plane's edge: the rows of a sparse swatch drift from patch to
+  // patch, and where a row's centres fall just past the edge the centre rule alone leaves a band
+  // of the plane bare however often it is seeded.
+  std::vector<double> element_sides;
+  for (const Rect2& b : swatch.element_bounds) element_sides.push_back(std::min(b.hi.x - b.lo.x, b.hi.y - b.lo.y));
+  std::nth_element(element_sides.begin(), element_sides.begin() + element_sides.size() / 2, element_sides.end());
+  const double reach = element_sides.empty() ? 0.0 : 0.25 * element_sides[element_sides.size() / 2];
+  const Rect2 retry_domain{domain.lo - glm::dvec2(reach), domain.hi + glm::dvec2(reach)};
 
   while (true) {
     if (options.cancel) options.cancel->check();
@@ -86,6 +94,8 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
     const int py = std::clamp(seed_y - sub_ny / 2, 0, grid.ny - sub_ny);
     request.sub_patch = {glm::dvec2(px * cell, py * cell), glm::dvec2((px + sub_nx) * cell, (py + sub_ny) * cell)};
     request.candidates = covering_translations(px, py, sub_nx, sub_ny, swatch_nx, swatch_ny, cell);
+    const Rect2& placing = holes.tries(*seed_cell) > 0 ? retry_domain : domain;
+    request.inside_domain = [&placing](const glm::dvec2& p) { return placing.contains(p); };
 
     const PatchOutcome outcome =
         quilt_patch(layer, request, swatch, matcher, step, rng, stats.merges, seconds, options.cancel);
