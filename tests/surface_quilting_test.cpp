@@ -199,9 +199,10 @@ void expect_quality(const SurfaceRun& run, const TriMesh& swatch, const char* wh
     hi = glm::max(hi, glm::dvec2(p));
   }
   const double copies = base_area / ((hi.x - lo.x) * (hi.y - lo.y) * run.unit * run.unit);
-  std::printf("%s: %.0f swatch copies, %d kept, %d dropped, %d holes, coverage %.3f, heights %.4f..%.4f diagonals\n",
-              what, copies, q.elements, run.stats.dropped_elements, run.stats.holes, q.coverage, q.height_min,
-              q.height_max);
+  std::printf("%s: %.0f swatch copies, %d kept, %d dropped, %d holes (%.2f%% of the area), coverage %.3f, heights "
+              "%.4f..%.4f diagonals\n",
+              what, copies, q.elements, run.stats.dropped_elements, run.stats.holes, 100.0 * run.stats.hole_area / base_area,
+              q.coverage, q.height_min, q.height_max);
   EXPECT_GE(copies, bar.min_copies);
   EXPECT_LE(copies, bar.max_copies);
   EXPECT_LE(run.stats.hole_area, 0.01 * base_area);
