@@ -246,8 +246,11 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::sort(minima.begin(), minima.end());
   if (minima.size() > static_cast<size_t>(options_.max_refined)) minima.resize(options_.max_refined);
 
-  std::vector<std::pair<glm::dvec2, double>> refined;
-  for (const auto& [cost, c] : minima) refined.push_back(refine(points, normals, candidates[c], cost));
+  // The minima refine independently, so they run side by side (each also spreads its points).
+  std::vector<std::pair<glm::dvec2, double>> refined(minima.size());
+  tbb::parallel_for(size_t{0}, minima.size(), [&](size_t k) {
+    refined[k] = refine(points, normals, candidates[minima[k].second], minima[k].first);
+  });
 
   // The host decides: a seeded random pick among the near-best, as image quilting does.
   double best_refined = std::numeric_limits<double>::infinity();
