@@ -2,7 +2,7 @@
 # Regenerates the README's pictures in docs/images/ from the built CLI: small swatches quilted
 # over a 4x4 plane, rendered from the top (the relief tiles oblique) with one colour per element.
 # Run after a build; MESHQUILT=path/to/meshquilt picks another executable. Takes a few minutes on
-# two cores.
+# two cores, and 10-20 more with ../shared (the bunny with the default swatches).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 meshquilt=${MESHQUILT:-build/cli/meshquilt}
@@ -35,10 +35,15 @@ bunny=../shared/data/meshes/bunny.off
 if [ -f "$bunny" ]; then
   "$meshquilt" swatch chainmail --preset small -o "$work/chain.ply" >/dev/null
   "$meshquilt" swatch weave --preset small -o "$work/weave.ply" >/dev/null
-  "$meshquilt" synth --swatch "$work/chain.ply" --base "$bunny" --scale 0.16 --backend cpu --progress none \
-    -o "$work/bunny_chain.ply" --preview docs/images/bunny_chainmail.png >/dev/null
-  "$meshquilt" synth --swatch "$work/weave.ply" --base "$bunny" --scale 0.16 --field data/bunny_field.json \
-    --backend cpu --progress none -o "$work/bunny_weave.ply" --preview docs/images/bunny_weave_field.png >/dev/null
+  # The default swatches at the curved issue's scales (about 56 copies each): 5-15 minutes.
+  "$meshquilt" swatch chainmail -o "$work/chain_default.ply" >/dev/null
+  "$meshquilt" swatch weave -o "$work/weave_default.ply" >/dev/null
+  "$meshquilt" synth --swatch "$work/chain_default.ply" --base "$bunny" --scale 0.14 --backend cpu --progress none \
+    -o "$work/bunny_chain.ply" >/dev/null
+  "$meshquilt" render "$work/bunny_chain.ply" --view side --size 800x640 -o docs/images/bunny_chainmail.png
+  "$meshquilt" synth --swatch "$work/weave_default.ply" --base "$bunny" --scale 0.13 --field data/bunny_field.json \
+    --backend cpu --progress none -o "$work/bunny_weave.ply" >/dev/null
+  "$meshquilt" render "$work/bunny_weave.ply" --view side --mode elements --size 800x640 -o docs/images/bunny_weave_field.png
   # One texture in a thick layer (twice the rings' height), placed through the shell map and by
   # displacement along normals (the paper's Figure 8).
   "$meshquilt" synth --swatch "$work/chain.ply" --base "$bunny" --scale 0.16 --shell-height 0.0107 --no-cleanup \
