@@ -197,19 +197,11 @@ TEST(PlanarQuilting, FruitRowsReachThePlanesEdge) {
   EXPECT_EQ(q.closed, q.elements);
   EXPECT_EQ(q.intersecting_share, 0.0);
   // Element-scale cells, as inspect sizes them: half the median element's x-y extent.
-  std::vector<double> extents;
-  for (const TriMesh& e : split_elements(result)) {
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (const Vec3& p : e.positions) {
-      lo = glm::min(lo, glm::dvec2(p));
-      hi = glm::max(hi, glm::dvec2(p));
-    }
-    extents.push_back(std::max(hi.x - lo.x, hi.y - lo.y));
-  }
-  std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+  std::vector<double> lengths = q.lengths;
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
   PlaneCoverageOptions asked;
   asked.region = {glm::dvec2(0.0), stats.plane_extent};
-  const double coverage = plane_coverage(result, 0.5 * extents[extents.size() / 2], asked).coverage;
+  const double coverage = plane_coverage(result, 0.5 * lengths[lengths.size() / 2] * q.swatch_side, asked).coverage;
   std::printf("fruit seed 2: %d fruit, %d holes, coverage %.4f of the plane\n", q.elements, stats.holes, coverage);
   EXPECT_GE(coverage, 0.98);  // measured: 0.982
   EXPECT_EQ(stats.holes, 0);
