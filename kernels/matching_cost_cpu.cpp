@@ -33,7 +33,7 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate) {
   if (!degenerate && nn > 0.0f && glm::dot(glm::cross(b - p, c - p), n) >= 0.0f &&
       glm::dot(glm::cross(c - p, a - p), n) >= 0.0f && glm::dot(glm::cross(a - p, b - p), n) >= 0.0f) {
     const float h = glm::dot(p - a, n);
-    return h * h / nn;
+    return h * h / std::max(nn, 1e-30f);  // as the shader divides
   }
   return std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
 }

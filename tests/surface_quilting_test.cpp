@@ -130,6 +130,7 @@ struct SurfaceRun {
   TriMesh output;
   SurfaceQuiltStats stats;
   double unit = 0.0;  // base units per swatch unit
+  glm::dvec2 swatch_extent{0.0};  // the swatch's x-y sides, swatch units
 };
 
 enum class Embed { shell, original_shell, normal };
@@ -158,7 +159,8 @@ SurfaceRun run_surface(const TriMesh& raw_base, const TriMesh& swatch, double sc
     lo = glm::min(lo, glm::dvec2(p));
     hi = glm::max(hi, glm::dvec2(p));
   }
-  run.unit = scale * surface.diagonal / std::max(hi.x - lo.x, hi.y - lo.y);
+  run.swatch_extent = hi - lo;
+  run.unit = scale * surface.diagonal / std::max(run.swatch_extent.x, run.swatch_extent.y);
   return run;
 }
 
@@ -193,12 +195,7 @@ void expect_quality(const SurfaceRun& run, const TriMesh& swatch, const char* wh
   const SurfaceQuality q = measure(run.output, run.base, swatch_cover_radius(swatch, run.unit));
   SCOPED_TRACE(what);
   // Swatch copies: the base's area over the swatch's x-y footprint at the run's scale.
-  glm::dvec2 lo(1e300), hi(-1e300);
-  for (const Vec3& p : swatch.positions) {
-    lo = glm::min(lo, glm::dvec2(p));
-    hi = glm::max(hi, glm::dvec2(p));
-  }
-  const double copies = base_area / ((hi.x - lo.x) * (hi.y - lo.y) * run.unit * run.unit);
+  const double copies = base_area / (run.swatch_extent.x * run.swatch_extent.y * run.unit * run.unit);
   std::printf("%s: %.0f swatch copies, %d kept, %d dropped, %d holes (%.2f%% of the area), coverage %.3f, heights "
               "%.4f..%.4f diagonals\n",
               what, copies, q.elements, run.stats.dropped_elements, run.stats.holes, 100.0 * run.stats.hole_area / base_area,
