@@ -139,9 +139,13 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
     double shrink = 1.0;
     {
       StageTimer timer(seconds, "patch");
+      // A cell that a patch seeded on it did not cover is seeded again with twice the distortion
+      // allowed: the same patch would fail the same way, and a patch shrunk below an element's
+      // length places nothing (long yarns over the bunny's ears and cone-like vertices).
+      const double max_distortion = options.max_area_distortion * std::ldexp(1.0, holes.tries(*seed_cell));
       for (int attempt = 0;; ++attempt) {
         patch = grow_conformal_patch(base, seed, full_radius * shrink);
-        const bool good = !patch.closed && patch.flipped_faces == 0 && patch.area_distortion <= options.max_area_distortion;
+        const bool good = !patch.closed && patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
         if (good || attempt >= options.max_shrinks) break;
         shrink *= 0.75;
       }

@@ -26,7 +26,8 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! Height of the layer in base units (0: the swatch's thickness at that scale).
   double shell_height = 0.0;
   //! A patch whose plane area over base area varies by more than this factor (max / min over its
-  //! triangles) is shrunk, with its output sub-patch (the paper's rule).
+  //! triangles) is shrunk, with its output sub-patch (the paper's rule). A patch seeded again on
+  //! a cell that an earlier one left uncovered allows twice the distortion per earlier attempt.
   double max_area_distortion = 4.0;
   int max_shrinks = 4;  //!< shrink a patch at most this many times (by 0.75 each)
   //! Places local coordinates in space; empty: displacement along vertex normals.
