@@ -1,10 +1,12 @@
 #include "quilt/conformal_patch.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <Eigen/Sparse>
 #include <glm/geometric.hpp>
@@ -46,6 +48,79 @@ glm::dvec2 clamped_barycentric(const glm::dvec2& p, const glm::dvec2& a, const g
     result = {w[1], w[2]};
   }
   return result;
+}
+
+uint64_t edge_key(int32_t a, int32_t b) {
+  return (static_cast<uint64_t>(static_cast<uint32_t>(std::min(a, b))) << 32) | static_cast<uint32_t>(std::max(a, b));
+}
+
+// V - E + F of a set of faces: 1 for a disk.
+int euler_characteristic(const TriMesh& mesh, const std::vector<int32_t>& faces) {
+  std::unordered_set<int32_t> vertices;
+  std::unordered_set<uint64_t> edges;
+  for (int32_t f : faces) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      vertices.insert(t[k]);
+      edges.insert(edge_key(t[k], t[(k + 1) % 3]));
+    }
+  }
+  return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) + static_cast<int>(faces.size());
+}
+
+// The faces of `ball` reached from `seed_face` across edges, nearest first (by their nearest
+// corner's distance), while they stay a disk: a face joins across one edge with a new third
+// vertex, or across two (a notch). Returns them sorted.
+std::vector<int32_t> disk_within(const TriMesh& mesh, const std::vector<int32_t>& ball, int32_t seed_face,
+                                 const std::unordered_map<int32_t, double>& distance) {
+  std::unordered_map<uint64_t, std::array<int32_t, 2>> edge_faces;
+  for (int32_t f : ball) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      auto [it, fresh] = edge_faces.try_emplace(edge_key(t[k], t[(k + 1) % 3]), std::array<int32_t, 2>{f, -1});
+      if (!fresh) it->second[1] = f;
+    }
+  }
+  const auto across = [&](int32_t f, int k) {
+    const Tri& t = mesh.triangles[f];
+    const std::array<int32_t, 2>& pair = edge_faces.at(edge_key(t[k], t[(k + 1) % 3]));
+    return pair[0] == f ? pair[1] : pair[0];
+  };
+  const auto priority = [&](int32_t f) {
+    double d = std::numeric_limits<double>::infinity();
+    for (int32_t v : mesh.triangles[f])
+      if (const auto it = distance.find(v); it != distance.end()) d = std::min(d, it->second);
+    return d;
+  };
+  std::unordered_set<int32_t> in_disk, disk_vertices;
+  std::vector<int32_t> disk;
+  using Entry = std::pair<double, int32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  const auto add = [&](int32_t f) {
+    in_disk.insert(f);
+    disk.push_back(f);
+    for (int k = 0; k < 3; ++k) {
+      disk_vertices.insert(mesh.triangles[f][k]);
+      const int32_t g = across(f, k);
+      if (g >= 0 && !in_disk.count(g)) queue.emplace(priority(g), g);
+    }
+  };
+  add(seed_face);
+  while (!queue.empty()) {
+    const int32_t g = queue.top().second;
+    queue.pop();
+    if (in_disk.count(g)) continue;
+    int shared = 0;
+    bool new_vertex = false;
+    for (int k = 0; k < 3; ++k) {
+      const int32_t h = across(g, k);
+      if (h >= 0 && in_disk.count(h)) ++shared;
+      if (!disk_vertices.count(mesh.triangles[g][k])) new_vertex = true;
+    }
+    if ((shared == 1 && new_vertex) || shared == 2) add(g);
+  }
+  std::sort(disk.begin(), disk.end());
+  return disk;
 }
 
 }  // namespace
@@ -300,6 +375,10 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   faces.erase(std::remove_if(faces.begin(), faces.end(),
                              [&](int32_t f) { return f != seed.face && base.face_areas[f] <= 0.0; }),
               faces.end());
+  // A ball that wraps around a handle or a thin part, or covers a closed component, is no disk,
+  // and a conformal map of it is meaningless (about half the full-size patches on genus-4
+  // fertility at the curved tests' scales): it is cut open where its fronts meet.
+  if (euler_characteristic(mesh, faces) != 1) faces = disk_within(mesh, faces, seed.face, distance);
   patch.faces = faces;
 
   std::unordered_map<int32_t, int32_t> local;
@@ -312,18 +391,6 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   patch.sorted_faces_ = faces;
   patch.sorted_positions_.resize(faces.size());
   for (size_t k = 0; k < faces.size(); ++k) patch.sorted_positions_[k] = static_cast<int32_t>(k);
-
-  // Boundary: an edge used by one patch face.
-  {
-    std::unordered_map<uint64_t, int> uses;
-    for (size_t f = 0; f < faces.size(); ++f)
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t a = static_cast<uint32_t>(patch.local_vertex_of_face_[3 * f + k]);
-        const uint32_t b = static_cast<uint32_t>(patch.local_vertex_of_face_[3 * f + (k + 1) % 3]);
-        ++uses[(static_cast<uint64_t>(std::min(a, b)) << 32) | std::max(a, b)];
-      }
-    patch.closed = std::none_of(uses.begin(), uses.end(), [](const auto& e) { return e.second == 1; });
-  }
 
   patch.uv = conformal_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices);
 

@@ -44,7 +44,6 @@ struct SurfacePatch {
   double radius = 0.0;            //!< geodesic radius (along edges) it was grown to
   double area_distortion = 1.0;   //!< max over min over faces of plane area / base area
   int flipped_faces = 0;          //!< faces whose plane image is mirrored
-  bool closed = false;            //!< the patch has no boundary (a whole closed component)
 
   //! Plane position of a surface point on a patch face. \pre face_index(p.face) >= 0
   glm::dvec2 to_plane(const SurfacePoint& p) const;
@@ -80,7 +79,10 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
 
 //! Grows a patch from `seed` over the faces reachable along edges within `radius` (a face joins
 //! when one of its vertices does; distances start from the seed point) and flattens it by LSCM,
-//! scaled so the plane area equals the base area, translated so the seed is the origin.
+//! scaled so the plane area equals the base area, translated so the seed is the origin. Where
+//! those faces are no disk (the ball wraps around a handle or covers a closed component), the
+//! patch keeps the ones reached from the seed face across edges, nearest first, while they stay
+//! a disk: it is cut open where its fronts meet.
 //! \throw SolverError when the LSCM system cannot be solved.
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius);
 

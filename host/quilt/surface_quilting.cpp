@@ -145,7 +145,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
       const double max_distortion = options.max_area_distortion * std::ldexp(1.0, holes.tries(*seed_cell));
       for (int attempt = 0;; ++attempt) {
         patch = grow_conformal_patch(base, seed, full_radius * shrink);
-        const bool good = !patch.closed && patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
+        const bool good = patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
         if (good || attempt >= options.max_shrinks) break;
         shrink *= 0.75;
       }
