@@ -155,17 +155,20 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
   std::vector<int32_t> faces(points.size(), -1);  // warm starts, carried from one evaluation to the next
   double step = 0.5 * cell_size_;
   for (int s = 0; s < options_.refine_steps; ++s, step *= 0.5) {
+    const glm::dvec2 directions[4] = {{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step}};
+    int came_from = -1;  // the direction back to where the last move started: it cost more
     bool improved = true;
     while (improved) {
       improved = false;
-      for (const glm::dvec2 d : {glm::dvec2(step, 0), glm::dvec2(-step, 0), glm::dvec2(0, step),
-                                 glm::dvec2(0, -step)}) {
-        const glm::dvec2 moved = t + d;
+      for (int k = 0; k < 4; ++k) {
+        if (k == came_from) continue;
+        const glm::dvec2 moved = t + directions[k];
         if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) continue;
         const double c = exact_cost(points, normals, moved, faces);
         if (c < cost * (1.0 - 1e-12)) {
           cost = c;
           t = moved;
+          came_from = k ^ 1;
           improved = true;
           break;
         }
