@@ -103,6 +103,42 @@ TEST(NearFaceGrid, ShortListsAndCoarsenedVoxelsStayValid) {
   check_against_brute_force(mesh, grid, rng, 1500, 0.1);
 }
 
+// Between widely spaced elements (fruit) most voxels list nothing; their reach is the nearest
+// face's distance less the voxel's half diagonal, a bound that stays close to the truth there
+// rather than stopping at `far`.
+TEST(NearFaceGrid, FarVoxelsAreBoundedByTheirNearestFace) {
+  std::mt19937 rng(8);
+  TriMesh mesh = random_soup(rng, 40);
+  const size_t first = mesh.positions.size();
+  for (size_t k = 0; k < first; ++k) {  // a second cluster far off
+    mesh.positions.push_back(0.3 * mesh.positions[k] + Vec3(12.0, 0.0, 0.0));
+    mesh.positions[k] *= 0.3;
+  }
+  for (size_t f = 0; f < 40; ++f) {
+    const Tri t = mesh.triangles[f];
+    const auto shift = static_cast<int32_t>(first);
+    mesh.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  }
+  const NearFaceGrid grid = build_near_face_grid(mesh, 0.2, 0.5, 0.2, 0.6, 16);
+  const double half_diagonal = 0.5 * std::sqrt(3.0) * grid.voxel;
+  const Vec3 span = Vec3(grid.size) * grid.voxel;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int far = 0;
+  for (int s = 0; s < 2000; ++s) {
+    const Vec3 q = grid.origin + Vec3(unit(rng), unit(rng), unit(rng)) * span;
+    const int64_t v = grid.voxel_of(q);
+    ASSERT_GE(v, 0);
+    if (grid.start[v] != grid.start[v + 1]) continue;
+    ++far;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Tri& t : mesh.triangles)
+      nearest = std::min(nearest, reference_distance(q, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+    ASSERT_GE(nearest, grid.reach[v] - 1e-12);
+    EXPECT_GE(grid.reach[v], nearest - 2.0 * half_diagonal - 1e-9) << "at " << q.x << " " << q.y << " " << q.z;
+  }
+  EXPECT_GT(far, 1000);
+}
+
 TEST(NearFaceGrid, OutsideTheGridThereIsNoVoxel) {
   std::mt19937 rng(7);
   const TriMesh mesh = random_soup(rng, 20);

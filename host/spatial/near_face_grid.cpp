@@ -89,6 +89,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   struct Part {
     std::vector<uint32_t> faces, counts;
     std::vector<float> near;
+    std::vector<int64_t> far_voxels;  // listing none
   };
   constexpr int64_t kChunk = 1024;
   std::vector<Part> parts(static_cast<size_t>((count + kChunk - 1) / kChunk));
@@ -146,6 +147,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
         grid.reach[v] = std::clamp(std::min(lowest, shell >= last_shell ? lowest : covered()) - radius, 0.0,
                                    std::numeric_limits<double>::max());
         out.counts.push_back(0);
+        out.far_voxels.push_back(v);
         continue;
       }
       const double list_radius = nearest + 2.0 * radius + list_margin;
@@ -172,6 +174,22 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       }
     }
   });
+  // A far voxel's reach is the nearest face's distance from its centre, less the radius: the
+  // shells above stop at `far`, which between widely spaced elements (the fruit) bounded points
+  // many times nearer than they are, and left the kernel's bounds too low to prune candidates.
+  std::vector<int64_t> far_voxels;
+  for (const Part& part : parts) far_voxels.insert(far_voxels.end(), part.far_voxels.begin(), part.far_voxels.end());
+  if (!far_voxels.empty()) {
+    const FaceBvh bvh(mesh);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, far_voxels.size(), 256), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t m = range.begin(); m != range.end(); ++m) {
+        const int64_t w = far_voxels[m];
+        const int i = static_cast<int>(w % n.x), j = static_cast<int>((w / n.x) % n.y), k = static_cast<int>(w / (int64_t{n.x} * n.y));
+        const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * voxel;
+        grid.reach[w] = std::max(grid.reach[w], bvh.closest_point(centre).distance - radius);
+      }
+    });
+  }
   grid.start.assign(count + 1, 0);
   int64_t v = 0;
   for (Part& part : parts) {

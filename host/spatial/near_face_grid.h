@@ -38,7 +38,8 @@ struct NearFaceGrid {
 //! Builds the lists for `mesh` with voxels of edge `voxel` (coarsened so that there are at most
 //! `max_voxels`) over its bounding box grown by `margin`. A voxel lists the faces within
 //! `list_margin` plus the voxel's diagonal of the face nearest its centre (the nearest
-//! `max_list` of them); voxels whose centre is farther than `far` from every face list none.
+//! `max_list` of them); voxels whose centre is farther than `far` from every face list none, and
+//! their reach is the nearest face's distance from the centre less half the voxel's diagonal.
 //! Parallel; exact in double.
 //! \pre mesh has faces; voxel, margin, list_margin and far are positive and finite.
 NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
