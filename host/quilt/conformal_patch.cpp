@@ -1,7 +1,6 @@
 #include "quilt/conformal_patch.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -13,6 +12,7 @@
 
 #include "error.h"
 #include "mesh/measures.h"
+#include "mesh/topology.h"
 
 namespace meshquilt {
 namespace {
@@ -50,10 +50,6 @@ glm::dvec2 clamped_barycentric(const glm::dvec2& p, const glm::dvec2& a, const g
   return result;
 }
 
-uint64_t edge_key(int32_t a, int32_t b) {
-  return (static_cast<uint64_t>(static_cast<uint32_t>(std::min(a, b))) << 32) | static_cast<uint32_t>(std::max(a, b));
-}
-
 // V - E + F of a set of faces: 1 for a disk.
 int euler_characteristic(const TriMesh& mesh, const std::vector<int32_t>& faces) {
   std::unordered_set<int32_t> vertices;
@@ -62,7 +58,7 @@ int euler_characteristic(const TriMesh& mesh, const std::vector<int32_t>& faces)
     const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
       vertices.insert(t[k]);
-      edges.insert(edge_key(t[k], t[(k + 1) % 3]));
+      edges.insert(undirected_edge_key(t[k], t[(k + 1) % 3]));
     }
   }
   return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) + static_cast<int>(faces.size());
@@ -71,20 +67,14 @@ int euler_characteristic(const TriMesh& mesh, const std::vector<int32_t>& faces)
 // The faces of `ball` reached from `seed_face` across edges, nearest first (by their nearest
 // corner's distance), while they stay a disk: a face joins across one edge with a new third
 // vertex, or across two (a notch). Returns them sorted.
-std::vector<int32_t> disk_within(const TriMesh& mesh, const std::vector<int32_t>& ball, int32_t seed_face,
+std::vector<int32_t> disk_within(const BaseSurface& base, const std::vector<int32_t>& ball, int32_t seed_face,
                                  const std::unordered_map<int32_t, double>& distance) {
-  std::unordered_map<uint64_t, std::array<int32_t, 2>> edge_faces;
-  for (int32_t f : ball) {
-    const Tri& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      auto [it, fresh] = edge_faces.try_emplace(edge_key(t[k], t[(k + 1) % 3]), std::array<int32_t, 2>{f, -1});
-      if (!fresh) it->second[1] = f;
-    }
-  }
+  const TriMesh& mesh = base.mesh;
+  const std::unordered_set<int32_t> in_ball(ball.begin(), ball.end());
+  // The face across edge k of f when it is in the ball, else -1.
   const auto across = [&](int32_t f, int k) {
-    const Tri& t = mesh.triangles[f];
-    const std::array<int32_t, 2>& pair = edge_faces.at(edge_key(t[k], t[(k + 1) % 3]));
-    return pair[0] == f ? pair[1] : pair[0];
+    const int32_t g = base.face_across[f][k];
+    return g >= 0 && in_ball.count(g) ? g : -1;
   };
   const auto priority = [&](int32_t f) {
     double d = std::numeric_limits<double>::infinity();
@@ -130,6 +120,7 @@ BaseSurface::BaseSurface(const TriMesh& base) : mesh(base) {
   face_normals.resize(base.num_faces());
   face_areas.resize(base.num_faces());
   vertex_faces.resize(base.num_vertices());
+  face_across = face_neighbors(base);
   edges.resize(base.num_vertices());
   diagonal = glm::length(bounding_box(base.positions).extent());
   for (size_t f = 0; f < base.num_faces(); ++f) {
@@ -378,7 +369,7 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   // A ball that wraps around a handle or a thin part, or covers a closed component, is no disk,
   // and a conformal map of it folds (36 of 60 full-size balls on genus-4 fertility at
   // `--scale 0.13` were none): it is cut open where its fronts meet.
-  if (euler_characteristic(mesh, faces) != 1) faces = disk_within(mesh, faces, seed.face, distance);
+  if (euler_characteristic(mesh, faces) != 1) faces = disk_within(base, faces, seed.face, distance);
   patch.faces = faces;
 
   std::unordered_map<int32_t, int32_t> local;

@@ -3,6 +3,7 @@
 //! paper): a patch grows from a seed point over the base until it holds a disk of a given radius,
 //! and is flattened by least-squares conformal maps (LSCM, Levy et al. 2002), one sparse solve.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -27,6 +28,7 @@ struct BaseSurface {
   std::vector<Vec3> face_normals;                               //!< #F, unit (0 for a degenerate face)
   std::vector<double> face_areas;                               //!< #F
   std::vector<std::vector<int32_t>> vertex_faces;               //!< #V, faces around each vertex
+  std::vector<std::array<int32_t, 3>> face_across;              //!< #F, as face_neighbors gives them
   std::vector<std::vector<std::pair<int32_t, double>>> edges;  //!< #V, (neighbour, edge length)
   double area = 0.0;                                            //!< total area
   double diagonal = 0.0;                                        //!< bounding-box diagonal
