@@ -15,7 +15,12 @@ jobs=${FUZZ_BUILD_JOBS:-2}
 
 command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
 CXX=clang++-14 cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build-fuzz -j"$jobs" >/dev/null
+# The build's own messages only on failure (a link error must be visible in CI's log).
+if ! cmake --build build-fuzz -j"$jobs" >build-fuzz/build.log 2>&1; then
+  tail -40 build-fuzz/build.log >&2
+  echo "fuzz.sh: building the fuzz targets failed (log: build-fuzz/build.log)" >&2
+  exit 1
+fi
 
 status=0
 total=0
