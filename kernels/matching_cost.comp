@@ -4,6 +4,8 @@
 // D = (1 + lambda*Dist)(1 + |n_p - n_f|), from one voxel of the swatch's nearest-face grid:
 // the minimum over the voxel's listed faces, capped by 1 + lambda*reach for every other face.
 // Where the listed faces decide (a point near the swatch), the bound is the minimum itself.
+// A voxel's faces come in groups of one normal bin; the point's factor for a bin bounds the
+// normal term of all of them, so most groups are passed over whole.
 // The C++ twin is matching_cost_cpu.cpp; keep the two in step.
 #extension GL_GOOGLE_include_directive : require
 #include "matching_cost_layout.h"
@@ -16,6 +18,8 @@ layout(std430, set = 0, binding = MATCHING_COST_BINDING_VOXELS) readonly buffer 
 layout(std430, set = 0, binding = MATCHING_COST_BINDING_POINTS) readonly buffer Points { MatchingPoint points[]; };
 layout(std430, set = 0, binding = MATCHING_COST_BINDING_TRANSLATIONS) readonly buffer Translations { vec2 translations[]; };
 layout(std430, set = 0, binding = MATCHING_COST_BINDING_COSTS) writeonly buffer Costs { float costs[]; };
+layout(std430, set = 0, binding = MATCHING_COST_BINDING_GROUPS) readonly buffer Groups { MatchingGroup groups[]; };
+layout(std430, set = 0, binding = MATCHING_COST_BINDING_FACTORS) readonly buffer Factors { float factors[]; };
 layout(push_constant, std430) uniform Push { MatchingCostParams params; };
 
 float segment_distance2(vec3 p, vec3 a, vec3 b) {
@@ -42,20 +46,14 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate) {
   return inside ? min(plane2, edge2) : edge2;
 }
 
-float point_bound(vec3 q, vec3 n) {
+// The minimum of best and D over the faces of group g that can beat best (`factor`: the
+// point's bound on the normal term over the group's bin).
+float scan_group(MatchingGroup g, float factor, vec3 q, vec3 n, float best) {
   float lambda = params.box_low.w;
-  ivec3 cell = ivec3(floor((q - params.origin.xyz) / params.origin.w));
-  if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, ivec3(params.grid_nx, params.grid_ny, params.grid_nz)))) {
-    // Outside the grid: no face is nearer than the faces' box.
-    vec3 outside = max(max(params.box_low.xyz - q, q - params.box_high.xyz), vec3(0.0));
-    return 1.0 + lambda * length(outside);
-  }
-  MatchingVoxel voxel = voxels[(cell.z * params.grid_ny + cell.y) * params.grid_nx + cell.x];
-  float best = 1.0 + lambda * voxel.reach;
-  for (uint k = voxel.first; k < voxel.first + voxel.count; ++k) {
+  for (uint k = g.first; k < g.end; ++k) {
     MatchingListed listed = voxel_faces[k];
     // Entries come nearest first: once one cannot beat the best, none after it can.
-    if (1.0 + lambda * listed.near >= best) break;
+    if ((1.0 + lambda * listed.near) * factor >= best) break;
     uint face = listed.face;
     vec4 normal = faces[face].normal;
     float normal_factor = 1.0 + length(n - normal.xyz);
@@ -70,11 +68,40 @@ float point_bound(vec3 q, vec3 n) {
   return best;
 }
 
+float point_bound(vec3 q, vec3 n, uint factor_base) {
+  float lambda = params.box_low.w;
+  ivec3 cell = ivec3(floor((q - params.origin.xyz) / params.origin.w));
+  if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, ivec3(params.grid_nx, params.grid_ny, params.grid_nz)))) {
+    // Outside the grid: no face is nearer than the faces' box.
+    vec3 outside = max(max(params.box_low.xyz - q, q - params.box_high.xyz), vec3(0.0));
+    return 1.0 + lambda * length(outside);
+  }
+  MatchingVoxel voxel = voxels[(cell.z * params.grid_ny + cell.y) * params.grid_nx + cell.x];
+  float best = 1.0 + lambda * voxel.reach;
+  // The group most likely to hold the minimum first; then the others that can still beat it.
+  uint lowest = voxel.first;
+  float lowest_bound = best;
+  for (uint g = voxel.first; g < voxel.first + voxel.count; ++g) {
+    float bound = (1.0 + lambda * groups[g].near) * factors[factor_base + groups[g].bin];
+    if (bound < lowest_bound) {
+      lowest_bound = bound;
+      lowest = g;
+    }
+  }
+  if (lowest_bound < best) best = scan_group(groups[lowest], factors[factor_base + groups[lowest].bin], q, n, best);
+  for (uint g = voxel.first; g < voxel.first + voxel.count; ++g) {
+    MatchingGroup group = groups[g];
+    float factor = factors[factor_base + group.bin];
+    if (g != lowest && (1.0 + lambda * group.near) * factor < best) best = scan_group(group, factor, q, n, best);
+  }
+  return best;
+}
+
 void main() {
   uint id = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   if (id >= params.invocation_count) return;
   uint c = id / params.point_count;
   uint i = id - c * params.point_count;
   MatchingPoint p = points[i];
-  costs[id] = point_bound(p.position.xyz - vec3(translations[c], 0.0), p.normal.xyz);
+  costs[id] = point_bound(p.position.xyz - vec3(translations[c], 0.0), p.normal.xyz, i * params.bin_count);
 }

@@ -97,12 +97,23 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
     if (static_cast<double>(rounded) > value) rounded = std::nextafter(rounded, -INFINITY);
     return rounded;
   };
-  if (grid.near.size() != grid.faces.size()) invalid("the nearest-face grid is malformed");
+  if (grid.near.size() != grid.faces.size() || grid.group_start.size() != voxel_count + 1 ||
+      grid.group_first.size() != grid.group_label.size() + 1 || grid.group_start.back() != grid.group_label.size() ||
+      grid.group_first.back() != grid.faces.size())
+    invalid("the nearest-face grid is malformed");
+  if (swatch.normal_bins == 0) invalid("no normal bins");
+  bins_ = swatch.normal_bins;
   std::vector<MatchingListed> listed(grid.faces.size());
   for (std::size_t k = 0; k < listed.size(); ++k) listed[k] = {grid.faces[k], grid.near[k]};
+  std::vector<MatchingGroup> groups(grid.group_label.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (grid.group_label[g] >= bins_ || grid.group_first[g] >= grid.group_first[g + 1])
+      invalid("the nearest-face grid is malformed");
+    groups[g] = {grid.group_first[g], grid.group_first[g + 1], grid.group_label[g], grid.near[grid.group_first[g]]};
+  }
   std::vector<MatchingVoxel> voxels(voxel_count);
   for (std::size_t v = 0; v < voxel_count; ++v) {
-    voxels[v] = {grid.start[v], grid.start[v + 1] - grid.start[v], round_down(grid.reach[v]), 0.0f};
+    voxels[v] = {grid.group_start[v], grid.group_start[v + 1] - grid.group_start[v], round_down(grid.reach[v]), 0.0f};
   }
   grid_params_.origin = glm::vec4(glm::vec3(grid.origin), static_cast<float>(grid.voxel));
   grid_params_.box_low = glm::vec4(glm::vec3(grid.box_low), swatch.lambda);
@@ -119,6 +130,7 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
   upload(faces_, faces.data(), faces.size() * sizeof(MatchingFace));
   upload(voxel_faces_, listed.data(), listed.size() * sizeof(MatchingListed));
   upload(voxels_, voxels.data(), voxels.size() * sizeof(MatchingVoxel));
+  upload(groups_, groups.data(), groups.size() * sizeof(MatchingGroup));
 }
 
 MatchingCost::~MatchingCost() = default;
@@ -133,9 +145,15 @@ engine::Buffer& MatchingCost::ensure(std::unique_ptr<engine::Buffer>& buffer, st
 
 std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& points,
                                              const std::vector<glm::vec3>& normals,
-                                             const std::vector<glm::vec2>& translations) {
+                                             const std::vector<glm::vec2>& translations,
+                                             const std::vector<double>& factors) {
   if (points.size() != normals.size())
     invalid(std::to_string(points.size()) + " points but " + std::to_string(normals.size()) + " normals");
+  if (!factors.empty() && factors.size() != points.size() * bins_)
+    invalid(std::to_string(factors.size()) + " normal factors for " + std::to_string(points.size()) + " points and " +
+            std::to_string(bins_) + " bins");
+  for (double f : factors)
+    if (!(f >= 0.0 && std::isfinite(f))) invalid("a normal factor is negative or not finite");
   // A NaN would reach float-to-int conversions in the voxel lookup.
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!finite(glm::dvec3(points[i])) || !finite(glm::dvec3(normals[i])))
@@ -156,12 +174,14 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
   std::size_t max_pairs = binding / sizeof(float);
   if (options_.max_pairs_per_dispatch > 0) max_pairs = std::min(max_pairs, options_.max_pairs_per_dispatch);
   max_pairs = std::min<std::size_t>(max_pairs, 1u << 30);
-  const std::size_t chunk_points = std::min({point_count, max_pairs, binding / sizeof(MatchingPoint)});
+  const std::size_t chunk_points =
+      std::min({point_count, max_pairs, binding / sizeof(MatchingPoint), binding / (bins_ * sizeof(float))});
   const std::size_t batch_candidates =
       std::min({candidate_count, std::max<std::size_t>(1, max_pairs / chunk_points), binding / sizeof(vec2)});
   engine::Buffer& point_buffer = ensure(points_, chunk_points * sizeof(MatchingPoint));
   engine::Buffer& translation_buffer = ensure(translations_, batch_candidates * sizeof(vec2));
   engine::Buffer& cost_buffer = ensure(costs_, chunk_points * batch_candidates * sizeof(float));
+  engine::Buffer& factor_buffer = ensure(factors_, chunk_points * bins_ * sizeof(float));
   engine::Buffer* bindings[MATCHING_COST_BINDING_COUNT];
   bindings[MATCHING_COST_BINDING_FACES] = faces_.get();
   bindings[MATCHING_COST_BINDING_VOXEL_FACES] = voxel_faces_.get();
@@ -169,13 +189,28 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
   bindings[MATCHING_COST_BINDING_POINTS] = &point_buffer;
   bindings[MATCHING_COST_BINDING_TRANSLATIONS] = &translation_buffer;
   bindings[MATCHING_COST_BINDING_COSTS] = &cost_buffer;
+  bindings[MATCHING_COST_BINDING_GROUPS] = groups_.get();
+  bindings[MATCHING_COST_BINDING_FACTORS] = &factor_buffer;
   MatchingCostParams params = grid_params_;
+  params.bin_count = bins_;
 
   for (std::size_t p0 = 0; p0 < point_count; p0 += chunk_points) {
     const std::size_t pn = std::min(chunk_points, point_count - p0);
     auto* gpu_points = static_cast<MatchingPoint*>(point_buffer.data());
     for (std::size_t i = 0; i < pn; ++i)
       gpu_points[i] = {glm::vec4(points[p0 + i], 1.0f), glm::vec4(normals[p0 + i], 0.0f)};
+    // Rounded down, with room for the kernel's float normal term (a few ulps off in 1e-6).
+    auto* gpu_factors = static_cast<float*>(factor_buffer.data());
+    for (std::size_t k = 0; k < pn * bins_; ++k) {
+      if (factors.empty()) {
+        gpu_factors[k] = 1.0f;
+        continue;
+      }
+      const double bound = factors[p0 * bins_ + k] * (1.0 - 1e-6);
+      float rounded = static_cast<float>(bound);
+      if (static_cast<double>(rounded) > bound) rounded = std::nextafter(rounded, 0.0f);
+      gpu_factors[k] = rounded;
+    }
     for (std::size_t c0 = 0; c0 < candidate_count; c0 += batch_candidates) {
       const std::size_t cn = std::min(batch_candidates, candidate_count - c0);
       std::memcpy(translation_buffer.data(), translations.data() + c0, cn * sizeof(vec2));
@@ -197,8 +232,9 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
 }
 
 std::vector<double> MatchingCost::score(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                        const std::vector<glm::vec2>& translations) {
-  const std::vector<float> costs = point_costs(points, normals, translations);
+                                        const std::vector<glm::vec2>& translations,
+                                        const std::vector<double>& factors) {
+  const std::vector<float> costs = point_costs(points, normals, translations, factors);
   // Float32 moves a query by a few ulps of the largest coordinate involved and each distance
   // by a few ulps of the swatch's: 3e-6 x that scale (times lambda and the normal factor, at
   // most 3) covers both with room; 1e-5 relative covers the products.

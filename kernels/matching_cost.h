@@ -24,6 +24,7 @@ struct MatchingSwatch {
   std::vector<std::array<uint32_t, 3>> triangles; //!< #F vertex indices (counter-clockwise)
   std::vector<glm::vec3> normals;                 //!< #F unit face normals as Eq. 1 uses them
   float lambda = 1.0f;                            //!< Eq. 1 weight (>= 0)
+  uint32_t normal_bins = 1;                       //!< the labels of the grid's groups are below this
 };
 
 //! Options of MatchingCost.
@@ -60,17 +61,19 @@ class MatchingCost {
   //! A lower bound of E(t) for each translation, #T values in double that hold against the exact
   //! Eq. 3 in double: the per-pair bounds are lowered by a margin that covers float32 rounding
   //! (1e-5 relative, plus 3e-6 x lambda x the coordinates' magnitude) before they are summed in
-  //! point order. Empty points give zeros; empty translations an empty result.
+  //! point order. Empty points give zeros; empty translations an empty result. `factors`
+  //! (#P x normal_bins, point-major) bound each point's normal term 1 + |n - n_f| from below
+  //! over the faces of each bin (NormalBins::factor_bounds); empty means 1 (no bound).
   //! \pre points.size() == normals.size(); normals unit length.
   //! \throw InputError when the sizes differ or a value is not finite; DeviceError when the
   //! device fails.
   std::vector<double> score(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                            const std::vector<glm::vec2>& translations);
+                            const std::vector<glm::vec2>& translations, const std::vector<double>& factors = {});
 
   //! The per-pair bounds behind score(), as the kernel computed them (no margin): #T by #P
   //! floats, candidate-major (index t * #P + p). Same preconditions and errors as score().
   std::vector<float> point_costs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                 const std::vector<glm::vec2>& translations);
+                                 const std::vector<glm::vec2>& translations, const std::vector<double>& factors = {});
 
   //! Dispatches made by the last score()/point_costs() call and their summed timing.
   std::size_t last_dispatch_count() const { return last_dispatches_; }
@@ -84,9 +87,12 @@ class MatchingCost {
   MatchingCostOptions options_;
   kernels::matching_cost_layout::MatchingCostParams grid_params_{};
   float swatch_scale_ = 0.0f;  //!< largest |coordinate| of the swatch
+  uint32_t bins_ = 1;
   std::unique_ptr<engine::Buffer> faces_;
   std::unique_ptr<engine::Buffer> voxel_faces_;
   std::unique_ptr<engine::Buffer> voxels_;
+  std::unique_ptr<engine::Buffer> groups_;
+  std::unique_ptr<engine::Buffer> factors_;
   std::unique_ptr<engine::Buffer> points_;
   std::unique_ptr<engine::Buffer> translations_;
   std::unique_ptr<engine::Buffer> costs_;

@@ -42,10 +42,30 @@ struct Swatch {
   const MatchingFace* faces;
   const MatchingListed* voxel_faces;
   const MatchingVoxel* voxels;
+  const MatchingGroup* groups;
   const MatchingCostParams& params;
 };
 
-float point_bound(const Swatch& s, vec3 q, vec3 n) {
+// The minimum of best and D over the faces of group g that can beat best (`factor`: the
+// point's bound on the normal term over the group's bin).
+float scan_group(const Swatch& s, const MatchingGroup& g, float factor, vec3 q, vec3 n, float best) {
+  const float lambda = s.params.box_low.w;
+  for (uint k = g.first; k < g.end; ++k) {
+    const MatchingListed& listed = s.voxel_faces[k];
+    // Entries come nearest first: once one cannot beat the best, none after it can.
+    if ((1.0f + lambda * listed.near) * factor >= best) break;
+    const MatchingFace& f = s.faces[listed.face];
+    const float normal_factor = 1.0f + glm::length(n - vec3(f.normal));
+    if ((1.0f + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
+    const float sphere_gap = std::max(glm::length(q - vec3(f.sphere)) - f.sphere.w, 0.0f);
+    if ((1.0f + lambda * sphere_gap) * normal_factor >= best) continue;
+    const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f);
+    best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
+  }
+  return best;
+}
+
+float point_bound(const Swatch& s, vec3 q, vec3 n, const float* factors) {
   const MatchingCostParams& params = s.params;
   const float lambda = params.box_low.w;
   const glm::ivec3 cell(glm::floor((q - vec3(params.origin)) / params.origin.w));
@@ -56,17 +76,21 @@ float point_bound(const Swatch& s, vec3 q, vec3 n) {
   }
   const MatchingVoxel& voxel = s.voxels[(cell.z * params.grid_ny + cell.y) * params.grid_nx + cell.x];
   float best = 1.0f + lambda * voxel.reach;
-  for (uint k = voxel.first; k < voxel.first + voxel.count; ++k) {
-    const MatchingListed& listed = s.voxel_faces[k];
-    // Entries come nearest first: once one cannot beat the best, none after it can.
-    if (1.0f + lambda * listed.near >= best) break;
-    const MatchingFace& f = s.faces[listed.face];
-    const float normal_factor = 1.0f + glm::length(n - vec3(f.normal));
-    if ((1.0f + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
-    const float sphere_gap = std::max(glm::length(q - vec3(f.sphere)) - f.sphere.w, 0.0f);
-    if ((1.0f + lambda * sphere_gap) * normal_factor >= best) continue;
-    const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f);
-    best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
+  // The group most likely to hold the minimum first; then the others that can still beat it.
+  uint lowest = voxel.first;
+  float lowest_bound = best;
+  for (uint g = voxel.first; g < voxel.first + voxel.count; ++g) {
+    const float bound = (1.0f + lambda * s.groups[g].near) * factors[s.groups[g].bin];
+    if (bound < lowest_bound) {
+      lowest_bound = bound;
+      lowest = g;
+    }
+  }
+  if (lowest_bound < best) best = scan_group(s, s.groups[lowest], factors[s.groups[lowest].bin], q, n, best);
+  for (uint g = voxel.first; g < voxel.first + voxel.count; ++g) {
+    const MatchingGroup& group = s.groups[g];
+    if (g != lowest && (1.0f + lambda * group.near) * factors[group.bin] < best)
+      best = scan_group(s, group, factors[group.bin], q, n, best);
   }
   return best;
 }
@@ -81,14 +105,17 @@ void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
   auto* costs = static_cast<float*>(dispatch.bindings[MATCHING_COST_BINDING_COSTS]);
   const Swatch swatch{static_cast<const MatchingFace*>(dispatch.bindings[MATCHING_COST_BINDING_FACES]),
                       static_cast<const MatchingListed*>(dispatch.bindings[MATCHING_COST_BINDING_VOXEL_FACES]),
-                      static_cast<const MatchingVoxel*>(dispatch.bindings[MATCHING_COST_BINDING_VOXELS]), params};
+                      static_cast<const MatchingVoxel*>(dispatch.bindings[MATCHING_COST_BINDING_VOXELS]),
+                      static_cast<const MatchingGroup*>(dispatch.bindings[MATCHING_COST_BINDING_GROUPS]), params};
+  const auto* factors = static_cast<const float*>(dispatch.bindings[MATCHING_COST_BINDING_FACTORS]);
   const uint point_count = params.point_count;
   const uint end = std::min(dispatch.first + dispatch.count, params.invocation_count);
   for (uint id = dispatch.first; id < end; ++id) {
     const uint c = id / point_count;
     const uint i = id - c * point_count;
     const MatchingPoint& p = points[i];
-    costs[id] = point_bound(swatch, vec3(p.position) - vec3(translations[c], 0.0f), vec3(p.normal));
+    costs[id] = point_bound(swatch, vec3(p.position) - vec3(translations[c], 0.0f), vec3(p.normal),
+                           factors + static_cast<std::size_t>(i) * params.bin_count);
   }
 }
 

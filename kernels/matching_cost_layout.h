@@ -25,7 +25,9 @@ using vec4 = glm::vec4;
 #define MATCHING_COST_BINDING_POINTS 3       // MatchingPoint[point_count]
 #define MATCHING_COST_BINDING_TRANSLATIONS 4 // vec2[candidate_count]
 #define MATCHING_COST_BINDING_COSTS 5        // float[candidate_count * point_count], candidate-major
-#define MATCHING_COST_BINDING_COUNT 6
+#define MATCHING_COST_BINDING_GROUPS 6       // MatchingGroup[...], the groups of every voxel's list
+#define MATCHING_COST_BINDING_FACTORS 7      // float[point_count * bin_count], point-major
+#define MATCHING_COST_BINDING_COUNT 8
 
 // A swatch face with what the bound needs precomputed on the host. The first two vectors are
 // all a face needs to be rejected; the corners are read only for faces that pass.
@@ -39,7 +41,7 @@ struct MatchingFace {
 
 // A voxel of the swatch's nearest-face grid (host/spatial/near_face_grid.h).
 struct MatchingVoxel {
-  uint first;  // its faces: voxel_faces[first, first + count)
+  uint first;  // its groups: groups[first, first + count)
   uint count;
   float reach; // every face not listed is at least this far from the voxel (rounded down)
   float padding;
@@ -50,6 +52,16 @@ struct MatchingVoxel {
 struct MatchingListed {
   uint face;
   float near; // rounded down
+};
+
+// A group of a voxel's listed faces whose normals share a bin (host/spatial/normal_bins.h):
+// for a point, every face of the group costs at least (1 + lambda * near) x the point's factor
+// for the bin.
+struct MatchingGroup {
+  uint first;  // its faces: voxel_faces[first, end), in increasing near
+  uint end;
+  uint bin;
+  float near;  // of its first face
 };
 
 // An output vertex: position and unit normal (w unused).
@@ -69,13 +81,14 @@ struct MatchingCostParams {
   uint point_count;      // points bound in this dispatch
   uint candidate_count;  // translations bound in this dispatch
   uint invocation_count; // pairs in this dispatch
-  uint padding0;
+  uint bin_count;        // normal bins: factors per point
   uint padding1;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(MatchingFace) == 80 && offsetof(MatchingFace, normal) == 16 && offsetof(MatchingFace, c) == 64);
 static_assert(sizeof(MatchingListed) == 8);
+static_assert(sizeof(MatchingGroup) == 16 && offsetof(MatchingGroup, near) == 12);
 static_assert(sizeof(MatchingVoxel) == 16 && offsetof(MatchingVoxel, reach) == 8);
 static_assert(sizeof(MatchingPoint) == 32 && offsetof(MatchingPoint, normal) == 16);
 static_assert(sizeof(vec2) == 8, "std430 vec2 array stride");

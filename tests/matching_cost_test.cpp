@@ -23,6 +23,7 @@
 #include "matching_cost.h"
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
+#include "spatial/normal_bins.h"
 
 namespace meshquilt {
 namespace {
@@ -109,12 +110,28 @@ struct Reference {
 
 // The grid over the swatch's own (float) vertices, with the proportions geometry matching uses
 // for a voxel edge `voxel`.
-NearFaceGrid grid_for(const MatchingSwatch& swatch, double voxel) {
+NearFaceGrid grid_for(const MatchingSwatch& swatch, double voxel, const std::vector<uint32_t>& face_groups = {}) {
   TriMesh mesh;
   for (const glm::vec3& p : swatch.positions) mesh.positions.emplace_back(p);
   for (const auto& t : swatch.triangles)
     mesh.triangles.push_back({static_cast<int32_t>(t[0]), static_cast<int32_t>(t[1]), static_cast<int32_t>(t[2])});
-  return build_near_face_grid(mesh, voxel, 1.3 * voxel, 2.0 * voxel, 4.0 * voxel, 128);
+  return build_near_face_grid(mesh, voxel, 1.3 * voxel, 2.0 * voxel, 4.0 * voxel, 128, int64_t{1} << 18, face_groups);
+}
+
+// The swatch's faces binned by normal (as geometry matching bins them), with the swatch told
+// how many bins there are, and the query's factors for them.
+struct Grouped {
+  NormalBins bins;
+  std::vector<double> factors;
+};
+Grouped group_by_normal(MatchingSwatch& swatch, const std::vector<glm::vec3>& normals, int per_side) {
+  Grouped grouped;
+  grouped.bins = bin_normals(std::vector<Vec3>(swatch.normals.begin(), swatch.normals.end()), per_side);
+  swatch.normal_bins = static_cast<uint32_t>(grouped.bins.size());
+  grouped.factors.resize(normals.size() * grouped.bins.size());
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    grouped.bins.factor_bounds(glm::normalize(Vec3(normals[i])), &grouped.factors[i * grouped.bins.size()]);
+  return grouped;
 }
 
 // ---- inputs -----------------------------------------------------------------------------
@@ -262,13 +279,26 @@ class MatchingCostTest : public ::testing::TestWithParam<Backend> {
     }
   }
 
-  // Checks bounds and scores against the reference; returns the share of exact pairs.
-  double check_against_reference(const MatchingSwatch& swatch, double voxel, const Query& query, const char* what) {
-    MatchingCost cost(*device_, swatch, grid_for(swatch, voxel));
-    const std::vector<float> bounds = cost.point_costs(query.points, query.normals, query.translations);
+  // Checks bounds and scores against the reference, with every voxel's faces in one list and
+  // with them grouped by normal (which must give the same bounds: a group is passed over only
+  // where none of its faces could lower the minimum); returns the share of exact pairs.
+  double check_against_reference(const MatchingSwatch& plain, double voxel, const Query& query, const char* what) {
+    MatchingSwatch grouped_swatch = plain;
+    const Grouped grouped = group_by_normal(grouped_swatch, query.normals, 4);
+    const std::vector<float> ungrouped =
+        MatchingCost(*device_, plain, grid_for(plain, voxel)).point_costs(query.points, query.normals, query.translations);
+    const MatchingSwatch& swatch = grouped_swatch;
+    MatchingCost cost(*device_, swatch, grid_for(swatch, voxel, grouped.bins.bin_of));
+    const std::vector<float> bounds = cost.point_costs(query.points, query.normals, query.translations, grouped.factors);
+    EXPECT_EQ(bounds.size(), ungrouped.size()) << what;
+    for (std::size_t k = 0; k < std::min(bounds.size(), ungrouped.size()); ++k)
+      if (!(std::abs(bounds[k] - ungrouped[k]) <= kTolerance * ungrouped[k])) {
+        ADD_FAILURE() << what << " pair " << k << ": grouped " << bounds[k] << ", one list " << ungrouped[k];
+        break;
+      }
     const std::vector<double> expected = Reference{swatch}.point_costs(query.points, query.normals, query.translations);
     const double exact_share = check_bound(bounds, expected, what);
-    const std::vector<double> scores = cost.score(query.points, query.normals, query.translations);
+    const std::vector<double> scores = cost.score(query.points, query.normals, query.translations, grouped.factors);
     EXPECT_EQ(scores.size(), query.translations.size());
     for (std::size_t c = 0; c < std::min(scores.size(), query.translations.size()); ++c) {
       double sum = 0.0, bound_sum = 0.0;
@@ -433,6 +463,11 @@ TEST_P(MatchingCostTest, RejectsBadInput) {
   EXPECT_THROW(cost.score({{0, NAN, 0}}, {{0, 0, 1}}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, INFINITY}}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{NAN, 0}}), InputError);
+  EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{0, 0}}, {1.0, 1.0}), InputError);  // one bin, two factors
+  EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{0, 0}}, {NAN}), InputError);
+  broken = grid;
+  broken.group_label[0] = 1;  // the swatch has one bin
+  EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);
   EXPECT_NEAR(cost.score({{0.2f, 0.2f, 1.0f}}, {{0, 0, 1}}, {{0, 0}})[0], 2.0, 1e-4);
 }
 
@@ -472,10 +507,13 @@ TEST(MatchingCostParity, VulkanAgreesWithCpuTwin) {
   std::mt19937 rng(77);
   MatchingSwatch swatch = random_swatch(rng, 400);
   set_normals(swatch);
-  const NearFaceGrid grid = grid_for(swatch, 0.1);
   const Query query = random_query(rng, 500, 30);
-  const std::vector<float> a = MatchingCost(*vulkan, swatch, grid).point_costs(query.points, query.normals, query.translations);
-  const std::vector<float> b = MatchingCost(*cpu, swatch, grid).point_costs(query.points, query.normals, query.translations);
+  const Grouped grouped = group_by_normal(swatch, query.normals, 4);
+  const NearFaceGrid grid = grid_for(swatch, 0.1, grouped.bins.bin_of);
+  const std::vector<float> a =
+      MatchingCost(*vulkan, swatch, grid).point_costs(query.points, query.normals, query.translations, grouped.factors);
+  const std::vector<float> b =
+      MatchingCost(*cpu, swatch, grid).point_costs(query.points, query.normals, query.translations, grouped.factors);
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k)
     ASSERT_LE(std::abs(a[k] - b[k]), kTolerance * std::max(1.0f, std::abs(b[k]))) << k << ": " << a[k] << " vs " << b[k];

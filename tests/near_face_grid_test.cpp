@@ -72,8 +72,12 @@ void check_against_brute_force(const TriMesh& mesh, const NearFaceGrid& grid, st
       const Tri& t = mesh.triangles[grid.faces[k]];
       ASSERT_GE(reference_distance(q, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]),
                 grid.near[k] - 1e-12);
-      if (k > grid.start[v]) ASSERT_LE(grid.near[k - 1], grid.near[k]);
     }
+    // The groups partition the list, each nearest first.
+    ASSERT_EQ(grid.group_first[grid.group_start[v]], grid.start[v]);
+    ASSERT_EQ(grid.group_first[grid.group_start[v + 1]], grid.start[v + 1]);
+    for (uint32_t g = grid.group_start[v]; g < grid.group_start[v + 1]; ++g)
+      for (uint32_t k = grid.group_first[g] + 1; k < grid.group_first[g + 1]; ++k) ASSERT_LE(grid.near[k - 1], grid.near[k]);
     // The faces' box bounds them (the kernel's bound outside the grid).
     const double outside = glm::length(glm::max(glm::max(grid.box_low - q, q - grid.box_high), Vec3(0.0)));
     EXPECT_GE(nearest, outside - 1e-12);
@@ -90,6 +94,35 @@ TEST(NearFaceGrid, ReachAndEntriesHoldEverywhereOnARandomSoup) {
   EXPECT_EQ(grid.start.size(), static_cast<size_t>(grid.size.x) * grid.size.y * grid.size.z + 1);
   EXPECT_EQ(grid.faces.size(), grid.near.size());
   check_against_brute_force(mesh, grid, rng, 3000, 0.25);
+}
+
+// Grouped by labels, a voxel lists the same faces with the same bounds, one group per label
+// in ascending order.
+TEST(NearFaceGrid, GroupsPartitionEachListByLabel) {
+  std::mt19937 rng(7);
+  const TriMesh mesh = random_soup(rng, 300);
+  std::vector<uint32_t> labels(mesh.num_faces());
+  for (size_t f = 0; f < labels.size(); ++f) labels[f] = static_cast<uint32_t>((f * 7) % 5);
+  const NearFaceGrid plain = build_near_face_grid(mesh, 0.1, 0.3, 0.15, 0.6, 64);
+  const NearFaceGrid grouped = build_near_face_grid(mesh, 0.1, 0.3, 0.15, 0.6, 64, int64_t{1} << 18, labels);
+  ASSERT_EQ(grouped.start, plain.start);
+  ASSERT_EQ(grouped.reach, plain.reach);
+  size_t several = 0;
+  for (size_t v = 0; v + 1 < plain.start.size(); ++v) {
+    std::multiset<std::pair<uint32_t, float>> a, b;
+    for (uint32_t k = plain.start[v]; k < plain.start[v + 1]; ++k) a.insert({plain.faces[k], plain.near[k]});
+    for (uint32_t k = grouped.start[v]; k < grouped.start[v + 1]; ++k) b.insert({grouped.faces[k], grouped.near[k]});
+    ASSERT_EQ(a, b) << "voxel " << v;
+    ASSERT_LE(plain.group_start[v + 1] - plain.group_start[v], 1u);  // one group without labels
+    for (uint32_t g = grouped.group_start[v]; g < grouped.group_start[v + 1]; ++g) {
+      if (g > grouped.group_start[v]) ASSERT_LT(grouped.group_label[g - 1], grouped.group_label[g]);
+      for (uint32_t k = grouped.group_first[g]; k < grouped.group_first[g + 1]; ++k)
+        ASSERT_EQ(labels[grouped.faces[k]], grouped.group_label[g]);
+    }
+    several += grouped.group_start[v + 1] - grouped.group_start[v] > 1;
+  }
+  EXPECT_GT(several, 100u);
+  check_against_brute_force(mesh, grouped, rng, 1500, 0.25);
 }
 
 TEST(NearFaceGrid, ShortListsAndCoarsenedVoxelsStayValid) {

@@ -24,6 +24,7 @@
 
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
+#include "spatial/normal_bins.h"
 
 namespace meshquilt {
 
@@ -71,15 +72,21 @@ class GeometryMatcher {
  private:
   //! Eq. 3 with a warm start per point: `faces` (#P, -1 for none) holds faces to try first and
   //! receives the minimizing faces. The result does not depend on the hints.
+  //! `factors` are normal_factors(normals).
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                    const glm::dvec2& translation, std::vector<int32_t>& faces) const;
-  //! Eq. 2 for one point moved into the swatch's frame, exact in double; `face` as above.
-  double point_cost(const Vec3& q, const Vec3& normal, int32_t& face) const;
+                    const std::vector<double>& factors, const glm::dvec2& translation,
+                    std::vector<int32_t>& faces) const;
+  //! Eq. 2 for one point moved into the swatch's frame, exact in double; `factors` are the
+  //! point's normal bounds per bin; `face` as above.
+  double point_cost(const Vec3& q, const Vec3& normal, const double* factors, int32_t& face) const;
+  //! Per point, the lower bounds of its normal term over each normal bin (#P x bins).
+  std::vector<double> normal_factors(const std::vector<Vec3>& normals) const;
   //! The closest point of the swatch to q (ties to the lower face), exact in double.
   Vec3 closest_point(const Vec3& q) const;
   //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).
   std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                                       const glm::dvec2& start, double cost) const;
+                                       const std::vector<double>& factors, const glm::dvec2& start,
+                                       double cost) const;
 
   const TriMesh& swatch_;
   MatchingOptions options_;
@@ -87,6 +94,7 @@ class GeometryMatcher {
   std::vector<Vec3> face_normals_;
   std::vector<std::pair<Vec3, double>> face_spheres_;  //!< centroid and radius: a quick lower bound of Dist
   std::unique_ptr<FaceBvh> bvh_;
+  NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them
   NearFaceGrid grid_;
   std::unique_ptr<MatchingCost> kernel_;
 };

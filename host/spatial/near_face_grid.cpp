@@ -25,7 +25,8 @@ int64_t NearFaceGrid::voxel_of(const Vec3& q) const {
 }
 
 NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
-                                  int max_list, int64_t max_voxels) {
+                                  int max_list, int64_t max_voxels, const std::vector<uint32_t>& face_groups) {
+  const auto label = [&](uint32_t f) { return face_groups.empty() ? 0u : face_groups[f]; };
   NearFaceGrid grid;
   grid.box_low = Vec3(std::numeric_limits<double>::infinity());
   grid.box_high = -grid.box_low;
@@ -89,6 +90,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   struct Part {
     std::vector<uint32_t> faces, counts;
     std::vector<float> near;
+    std::vector<uint32_t> group_counts, group_sizes, group_labels;  // groups per voxel; entries and label per group
     std::vector<int64_t> far_voxels;  // listing none
   };
   constexpr int64_t kChunk = 1024;
@@ -147,6 +149,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
         grid.reach[v] = std::clamp(std::min(lowest, shell >= last_shell ? lowest : covered()) - radius, 0.0,
                                    std::numeric_limits<double>::max());
         out.counts.push_back(0);
+        out.group_counts.push_back(0);
         out.far_voxels.push_back(v);
         continue;
       }
@@ -165,6 +168,19 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       grid.reach[v] = std::clamp(std::min(unlisted, shell >= last_shell ? unlisted : covered()) - radius, 0.0,
                                  std::numeric_limits<double>::max());
       out.counts.push_back(static_cast<uint32_t>(listed));
+      // Groups by label, each still nearest first.
+      std::stable_sort(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed),
+                       [&](const auto& a, const auto& b) { return label(a.second) < label(b.second); });
+      uint32_t groups = 0;
+      for (size_t m = 0; m < listed; ++m) {
+        if (m == 0 || label(s.found[m].second) != out.group_labels.back()) {
+          ++groups;
+          out.group_labels.push_back(label(s.found[m].second));
+          out.group_sizes.push_back(0);
+        }
+        ++out.group_sizes.back();
+      }
+      out.group_counts.push_back(groups);
       for (size_t m = 0; m < listed; ++m) {
         const double near = std::max(s.found[m].first - radius, 0.0);
         float rounded = static_cast<float>(near);
@@ -191,12 +207,17 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     });
   }
   grid.start.assign(count + 1, 0);
+  grid.group_start.assign(count + 1, 0);
+  grid.group_first.assign(1, 0);
   int64_t v = 0;
   for (Part& part : parts) {
-    for (uint32_t listed : part.counts) {
-      grid.start[v + 1] = grid.start[v] + listed;
+    for (size_t m = 0; m < part.counts.size(); ++m) {
+      grid.start[v + 1] = grid.start[v] + part.counts[m];
+      grid.group_start[v + 1] = grid.group_start[v] + part.group_counts[m];
       ++v;
     }
+    for (uint32_t size : part.group_sizes) grid.group_first.push_back(grid.group_first.back() + size);
+    grid.group_label.insert(grid.group_label.end(), part.group_labels.begin(), part.group_labels.end());
     grid.faces.insert(grid.faces.end(), part.faces.begin(), part.faces.end());
     grid.near.insert(grid.near.end(), part.near.begin(), part.near.end());
     part = Part{};  // released as it is joined

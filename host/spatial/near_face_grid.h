@@ -30,6 +30,13 @@ struct NearFaceGrid {
   //! (0 when nothing is known). Both bounds also hold a little past the voxel's walls (1e-6 of
   //! a voxel), for points rounded into a neighbour.
   std::vector<double> reach;
+  //! Each voxel's list in groups of faces with one label (`face_groups` of build_near_face_grid;
+  //! one group without labels), each group in increasing `near`: voxel v's groups are
+  //! [group_start[v], group_start[v + 1]); group g lists faces [group_first[g], group_first[g + 1])
+  //! of label group_label[g]. A scan then stops per group, and skips groups it can rule out.
+  std::vector<uint32_t> group_start;  //!< #voxels + 1
+  std::vector<uint32_t> group_first;  //!< #groups + 1
+  std::vector<uint32_t> group_label;  //!< #groups
 
   //! The voxel holding q (x fastest), or -1 outside the grid.
   int64_t voxel_of(const Vec3& q) const;
@@ -40,9 +47,11 @@ struct NearFaceGrid {
 //! `list_margin` plus the voxel's diagonal of the face nearest its centre (the nearest
 //! `max_list` of them); voxels whose centre is farther than `far` from every face list none, and
 //! their reach is the nearest face's distance from the centre less half the voxel's diagonal.
+//! `face_groups` (#F labels, or empty for one group) groups each list by label, ascending.
 //! Parallel; exact in double.
 //! \pre mesh has faces; voxel, margin, list_margin and far are positive and finite.
 NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
-                                  int max_list = 48, int64_t max_voxels = int64_t{1} << 18);
+                                  int max_list = 48, int64_t max_voxels = int64_t{1} << 18,
+                                  const std::vector<uint32_t>& face_groups = {});
 
 }  // namespace meshquilt
