@@ -60,7 +60,9 @@ float scan_group(MatchingGroup g, float factor, vec3 q, vec3 n, float best) {
     if ((1.0 + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
     vec4 sphere = faces[face].sphere;
     float sphere_gap = max(length(q - sphere.xyz) - sphere.w, 0.0);
-    if ((1.0 + lambda * sphere_gap) * normal_factor < best) {
+    // The distance to the face's plane is at most the distance to the face.
+    float plane_gap = normal.w == 0.0 ? abs(dot(q - faces[face].a.xyz, normal.xyz)) : 0.0;
+    if ((1.0 + lambda * max(sphere_gap, plane_gap)) * normal_factor < best) {
       float dist2 = triangle_distance2(q, faces[face].a.xyz, faces[face].b.xyz, faces[face].c.xyz, normal.w != 0.0);
       best = min(best, (1.0 + lambda * sqrt(dist2)) * normal_factor);
     }

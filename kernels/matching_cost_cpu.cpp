@@ -58,7 +58,9 @@ float scan_group(const Swatch& s, const MatchingGroup& g, float factor, vec3 q, 
     const float normal_factor = 1.0f + glm::length(n - vec3(f.normal));
     if ((1.0f + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
     const float sphere_gap = std::max(glm::length(q - vec3(f.sphere)) - f.sphere.w, 0.0f);
-    if ((1.0f + lambda * sphere_gap) * normal_factor >= best) continue;
+    // The distance to the face's plane is at most the distance to the face.
+    const float plane_gap = f.normal.w == 0.0f ? std::abs(glm::dot(q - vec3(f.a), vec3(f.normal))) : 0.0f;
+    if ((1.0f + lambda * std::max(sphere_gap, plane_gap)) * normal_factor >= best) continue;
     const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f);
     best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
   }

@@ -37,6 +37,13 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
     double radius = 0.0;
     for (int32_t v : t) radius = std::max(radius, glm::length(swatch.positions[v] - centre));
     face_spheres_.push_back({centre, radius * (1.0 + 1e-12)});
+    // A sliver's normal is too uncertain for its plane to bound distances (as the kernel's).
+    double longest2 = 0.0;
+    for (int e = 0; e < 3; ++e) {
+      const Vec3 d = swatch.positions[t[(e + 1) % 3]] - swatch.positions[t[e]];
+      longest2 = std::max(longest2, glm::dot(d, d));
+    }
+    face_planar_.push_back(len > 1e-6 * longest2);
   }
   bvh_ = std::make_unique<FaceBvh>(swatch_);
   // Voxels of 3/4 of a mean edge (coarser past 2^18 voxels) listing the faces within 1.5 mean
@@ -98,7 +105,14 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
         const double turn = 1.0 + glm::length(normal - face_normals_[f]);
         if (nearest * turn >= best) continue;  // nor can this face, facing away
         const auto& [centre, radius] = face_spheres_[f];
-        if ((1.0 + lambda * std::max(glm::length(q - centre) - radius, 0.0)) * turn >= best) continue;  // or far off
+        // Or far off: the distance is at least that to the face's bounding sphere and (for a
+        // face with a well-defined plane) to its plane.
+        double gap = std::max(glm::length(q - centre) - radius, 0.0);
+        if (face_planar_[f]) {
+          const Vec3& a = swatch_.positions[swatch_.triangles[f][0]];
+          gap = std::max(gap, std::abs(glm::dot(q - a, face_normals_[f])) * (1.0 - 1e-12));
+        }
+        if ((1.0 + lambda * gap) * turn >= best) continue;
         const double c = (1.0 + lambda * distance_to(f)) * turn;
         if (c < best) {
           best = c;

@@ -27,6 +27,7 @@ int64_t NearFaceGrid::voxel_of(const Vec3& q) const {
 NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double margin, double list_margin, double far,
                                   int max_list, int64_t max_voxels, const std::vector<uint32_t>& face_groups) {
   const auto label = [&](uint32_t f) { return face_groups.empty() ? 0u : face_groups[f]; };
+  const uint32_t labels = face_groups.empty() ? 1u : *std::max_element(face_groups.begin(), face_groups.end()) + 1;
   NearFaceGrid grid;
   grid.box_low = Vec3(std::numeric_limits<double>::infinity());
   grid.box_high = -grid.box_low;
@@ -84,6 +85,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     std::vector<uint32_t> stamp;
     uint32_t current = 0;
     std::vector<std::pair<double, uint32_t>> found;
+    std::vector<uint32_t> label_count;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
   // Voxels in fixed chunks, each listing into its own flat arrays, joined in order afterwards.
@@ -168,25 +170,30 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       grid.reach[v] = std::clamp(std::min(unlisted, shell >= last_shell ? unlisted : covered()) - radius, 0.0,
                                  std::numeric_limits<double>::max());
       out.counts.push_back(static_cast<uint32_t>(listed));
-      // Groups by label, each still nearest first.
-      std::stable_sort(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed),
-                       [&](const auto& a, const auto& b) { return label(a.second) < label(b.second); });
-      uint32_t groups = 0;
-      for (size_t m = 0; m < listed; ++m) {
-        if (m == 0 || label(s.found[m].second) != out.group_labels.back()) {
-          ++groups;
-          out.group_labels.push_back(label(s.found[m].second));
-          out.group_sizes.push_back(0);
-        }
-        ++out.group_sizes.back();
+      // Groups by label (a counting sort, which keeps each group nearest first).
+      s.label_count.assign(labels, 0);
+      for (size_t m = 0; m < listed; ++m) ++s.label_count[label(s.found[m].second)];
+      uint32_t groups = 0, offset = 0;
+      for (uint32_t l = 0; l < labels; ++l) {
+        if (s.label_count[l] == 0) continue;
+        ++groups;
+        out.group_labels.push_back(l);
+        out.group_sizes.push_back(s.label_count[l]);
+        const uint32_t size = s.label_count[l];
+        s.label_count[l] = offset;  // now where the group starts
+        offset += size;
       }
       out.group_counts.push_back(groups);
+      const size_t base = out.faces.size();
+      out.faces.resize(base + listed);
+      out.near.resize(base + listed);
       for (size_t m = 0; m < listed; ++m) {
         const double near = std::max(s.found[m].first - radius, 0.0);
         float rounded = static_cast<float>(near);
         if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
-        out.faces.push_back(s.found[m].second);
-        out.near.push_back(rounded);
+        const size_t at = base + s.label_count[label(s.found[m].second)]++;
+        out.faces[at] = s.found[m].second;
+        out.near[at] = rounded;
       }
     }
   });
