@@ -79,6 +79,15 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     }
   }
 
+  // Each face's centroid and the distance to its farthest corner (padded for rounding).
+  std::vector<std::pair<Vec3, double>> spheres;
+  spheres.reserve(mesh.num_faces());
+  for (const Tri& t : mesh.triangles) {
+    const Vec3 centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+    double extent = 0.0;
+    for (int32_t v : t) extent = std::max(extent, glm::length(mesh.positions[v] - centroid));
+    spheres.push_back({centroid, extent * (1.0 + 1e-12) + 1e-300});
+  }
   // Every point within pad of a voxel lies within `radius` of its centre.
   const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * pad;
   struct Scratch {
@@ -113,6 +122,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       double nearest = std::numeric_limits<double>::infinity();
       // After shell `shell` every face with a point within (shell + 0.5) voxels of the centre
       // (in the max norm, hence also in the Euclidean one) has been found, with its distance.
+      double cutoff = std::numeric_limits<double>::infinity();
       auto scan_shell = [&](int shell) {
         const glm::ivec3 a = glm::max(glm::ivec3(i, j, k) - shell, glm::ivec3(0));
         const glm::ivec3 b = glm::min(glm::ivec3(i, j, k) + shell, n - 1);
@@ -129,6 +139,13 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
                 const uint32_t f = bucket[m];
                 if (s.stamp[f] == s.current) continue;
                 s.stamp[f] = s.current;
+                // A face whose bounding sphere lies past `cutoff` is not listed; its distance
+                // only bounds the reach, and the sphere's gap bounds that as well.
+                const double gap = glm::length(centre - spheres[f].first) - spheres[f].second;
+                if (gap > cutoff) {
+                  s.found.emplace_back(gap, f);
+                  continue;
+                }
                 const Tri& t = mesh.triangles[f];
                 const double d = closest_point_on_triangle(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).distance;
                 s.found.emplace_back(d, f);
@@ -156,6 +173,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
         continue;
       }
       const double list_radius = nearest + 2.0 * radius + list_margin;
+      cutoff = list_radius;
       while (covered() < list_radius && shell < last_shell && !all_found()) scan_shell(++shell);
       if (all_found()) shell = last_shell;
       // Only the faces within the list's radius need an order (most found faces lie beyond it).
