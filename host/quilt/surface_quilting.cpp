@@ -25,6 +25,9 @@ struct SurfaceElement {
   std::vector<Tri> triangles;
   int32_t source = -1;
   Box3 bounds;  // of the base points under it, for culling
+  // Its vertices in space (position_during_synthesis), filled when a patch first needs them as
+  // an obstacle; a changed element is a new one, so they never go stale.
+  std::vector<Vec3> in_space;
 };
 
 void update_bounds(SurfaceElement& e, const BaseSurface& base) {
@@ -170,7 +173,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
       reach.hi += Vec3(2.0 * shell);
       for (size_t e = 0; e < elements.size(); ++e) {
         if (!alive[e]) continue;
-        const SurfaceElement& element = elements[e];
+        SurfaceElement& element = elements[e];
         if (!element.bounds.overlaps(reach)) continue;
         std::vector<uint8_t> vertex_in(element.vertices.size());
         for (size_t v = 0; v < element.vertices.size(); ++v)
@@ -204,14 +207,14 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
         }
         // The rest of the element stays where it is: an obstacle in space for this patch.
         if (std::find(part.face_in_part.begin(), part.face_in_part.end(), 0) != part.face_in_part.end()) {
+          if (element.in_space.empty())
+            for (const LocalVertex& lv : element.vertices)
+              element.in_space.push_back(embedding->position_during_synthesis(lv.point, lv.height));
           TriMesh rest;
           for (size_t f = 0; f < element.triangles.size(); ++f) {
             if (part.face_in_part[f]) continue;
             const int32_t first = static_cast<int32_t>(rest.positions.size());
-            for (int32_t v : element.triangles[f]) {
-              const LocalVertex& lv = element.vertices[v];
-              rest.positions.push_back(embedding->position_during_synthesis(lv.point, lv.height));
-            }
+            for (int32_t v : element.triangles[f]) rest.positions.push_back(element.in_space[v]);
             rest.triangles.push_back({first, first + 1, first + 2});
           }
           obstacles.push_back(std::move(rest));
