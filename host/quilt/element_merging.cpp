@@ -327,7 +327,9 @@ MergeResult merge_elements(const TriMesh& out_element, const TriMesh& in_element
                    : whole(out_element, MergeOutcome::kept_out, std::move(why));
   };
 
-  const FaceBvh out_bvh(out_element), in_bvh(in_element);
+  // Two BVHs per merged pair, each queried about once per vertex: the fast build pays, and
+  // closest points break ties by face, so answers do not depend on it.
+  const FaceBvh out_bvh(out_element, BvhQuality::low), in_bvh(in_element, BvhQuality::low);
   const auto out_neighbors = face_neighbors(out_element), in_neighbors = face_neighbors(in_element);
   const Coverage coverage = measure_coverage(pair, out_bvh, in_bvh);
 
