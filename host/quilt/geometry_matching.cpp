@@ -93,6 +93,19 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   };
   // The hinted face (nearest at a translation close to this one) costs what it costs: starting
   // from it the searches below stop sooner, and their minimum is the same.
+  // The distance is at least that to the face's bounding sphere and (for a face with a
+  // well-defined plane) to its plane.
+  const auto gap_to = [&](int32_t f) {
+    double gap = std::max(glm::length(q - face_spheres_[f].first) - face_spheres_[f].second, 0.0);
+    if (face_planar_[f]) {
+      const Vec3& a = swatch_.positions[swatch_.triangles[f][0]];
+      gap = std::max(gap, std::abs(glm::dot(q - a, face_normals_[f])) * (1.0 - 1e-12));
+    }
+    return gap;
+  };
+  const auto face_bound = [&](int32_t f) {
+    return (1.0 + lambda * gap_to(f)) * (1.0 + glm::length(normal - face_normals_[f]));
+  };
   double best = face >= 0 ? face_cost(face, distance_to(face)) : std::numeric_limits<double>::infinity();
   const int64_t voxel = grid_.voxel_of(q);
   if (voxel >= 0) {
@@ -106,15 +119,7 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
         const auto f = static_cast<int32_t>(grid_.faces[k]);
         const double turn = 1.0 + glm::length(normal - face_normals_[f]);
         if (nearest * turn >= best) continue;  // nor can this face, facing away
-        const auto& [centre, radius] = face_spheres_[f];
-        // Or far off: the distance is at least that to the face's bounding sphere and (for a
-        // face with a well-defined plane) to its plane.
-        double gap = std::max(glm::length(q - centre) - radius, 0.0);
-        if (face_planar_[f]) {
-          const Vec3& a = swatch_.positions[swatch_.triangles[f][0]];
-          gap = std::max(gap, std::abs(glm::dot(q - a, face_normals_[f])) * (1.0 - 1e-12));
-        }
-        if ((1.0 + lambda * gap) * turn >= best) continue;
+        if ((1.0 + lambda * gap_to(f)) * turn >= best) continue;  // or far off
         const double c = (1.0 + lambda * distance_to(f)) * turn;
         if (c < best) {
           best = c;
@@ -136,10 +141,13 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
     if (best <= 1.0 + lambda * grid_.reach[voxel]) return best;
   }
-  // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win.
+  // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win; within that,
+  // a face's normal term and its bounding sphere rule most out without a closest point (far
+  // from the swatch, the normal term widens the search to many faces facing away).
   const ClosestPoint found = bvh_->min_cost_face(
       q, [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); },
-      [&](double d) { return (d - 1.0) / lambda; }, &best, best);
+      [&](double d) { return (d - 1.0) / lambda; }, &best, best,
+      [&](int32_t f) { return face_bound(f); });
   if (found.face >= 0) face = found.face;
   return best;
 }

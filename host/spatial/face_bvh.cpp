@@ -58,6 +58,7 @@ struct QueryState {
   double max_distance = std::numeric_limits<double>::infinity();
   const std::function<double(const ClosestPoint&)>* cost = nullptr;
   const std::function<double(double)>* radius_for = nullptr;
+  const std::function<double(int32_t)>* face_bound = nullptr;  // may be empty
   // Box queries.
   const std::vector<Box>* boxes = nullptr;
   Box box;
@@ -96,6 +97,7 @@ bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
 bool min_cost_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<QueryState*>(args->userPtr);
   const auto f = static_cast<int32_t>(args->primID);
+  if (*q->face_bound && (*q->face_bound)(f) > q->best_cost) return false;  // cannot beat or tie it
   const ClosestPoint cp = closest_on_face(*q->mesh, f, q->p);
   const double c = (*q->cost)(cp);
   if (c < q->best_cost || (c == q->best_cost && f < q->best.face)) {
@@ -338,12 +340,14 @@ ClosestPoint FaceBvh::closest_point(const Vec3& p, double max_distance) const {
 
 ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(const ClosestPoint&)>& cost,
                                     const std::function<double(double best_cost)>& radius_for,
-                                    double* best_cost, double known_cost) const {
+                                    double* best_cost, double known_cost,
+                                    const std::function<double(int32_t)>& face_bound) const {
   QueryState q;
   q.mesh = &mesh_;
   q.p = p;
   q.cost = &cost;
   q.radius_for = &radius_for;
+  q.face_bound = &face_bound;
   q.best_cost = known_cost;
   q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
   if (mesh_.num_faces() > 0) {

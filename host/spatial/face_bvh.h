@@ -62,12 +62,14 @@ class FaceBvh {
   //! the minimum (infinity when the mesh is empty).
   //! `known_cost`, when finite, is a cost some face is known to reach: the search then starts
   //! at radius_for(known_cost), and when no face costs less the answer has face -1 and
-  //! `best_cost` = known_cost.
+  //! `best_cost` = known_cost. `face_bound`, when given, is a cheap lower bound of a face's cost
+  //! (without its closest point): a face whose bound exceeds the best so far is passed over.
   ClosestPoint min_cost_face(const Vec3& p,
                              const std::function<double(const ClosestPoint&)>& cost,
                              const std::function<double(double best_cost)>& radius_for,
                              double* best_cost,
-                             double known_cost = std::numeric_limits<double>::infinity()) const;
+                             double known_cost = std::numeric_limits<double>::infinity(),
+                             const std::function<double(int32_t face)>& face_bound = {}) const;
 
   //! The first face met by the ray origin + t * direction, 0 < t <= max_distance, both sides of a
   //! face counting; `distance` is t (the Euclidean distance when direction has unit length).
