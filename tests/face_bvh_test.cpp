@@ -138,6 +138,29 @@ TEST_P(RealMesh, ClosestPointAndMinCostMatchBruteForce) {
         [&](double cost) { return (cost - 1.0) / lambda; }, &best);
     ASSERT_GE(mc.face, 0);
     EXPECT_NEAR(best, brute_cost, 1e-12);
+
+    // A lower bound per face (its bounding sphere's gap for the distance) passes over faces
+    // and changes nothing; a bound that rules out the best face is obeyed.
+    const auto gap_bound = [&](int32_t f) {
+      const Tri& t = mesh.triangles[f];
+      const Vec3 centre = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+      double radius = 0.0;
+      for (int32_t v : t) radius = std::max(radius, glm::length(mesh.positions[v] - centre));
+      return 1.0 + lambda * std::max(glm::length(p - centre) - radius * (1.0 + 1e-9), 0.0) + (1.0 - glm::dot(n, normals[f]));
+    };
+    const auto cost_of = [&](const ClosestPoint& c) { return 1.0 + lambda * c.distance + (1.0 - glm::dot(n, normals[c.face])); };
+    const auto radius_of = [&](double cost) { return (cost - 1.0) / lambda; };
+    double bounded = 0.0;
+    const ClosestPoint with_bound =
+        bvh.min_cost_face(p, cost_of, radius_of, &bounded, std::numeric_limits<double>::infinity(), gap_bound);
+    EXPECT_EQ(with_bound.face, mc.face);
+    EXPECT_EQ(bounded, best);
+    double without_best = 0.0;
+    // (Once some cost is known: the bound is compared with the best so far.)
+    const ClosestPoint other = bvh.min_cost_face(p, cost_of, radius_of, &without_best, 2.0 * best,
+                                                 [&](int32_t f) { return f == mc.face ? INFINITY : gap_bound(f); });
+    EXPECT_NE(other.face, mc.face);
+    EXPECT_GE(without_best, best);
   }
 }
 
