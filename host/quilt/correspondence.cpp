@@ -165,6 +165,7 @@ struct JoinedInput {
   TriMesh mesh;
   std::vector<int32_t> face_element, face_local;
   std::vector<Vec3> face_normal;  // unit, zero for degenerate faces
+  std::vector<std::pair<Vec3, double>> face_sphere;  // centroid and the distance to the farthest corner (padded)
   // Distinct edges in compressed rows (both directions) with their lengths.
   std::vector<int32_t> edge_offsets, edge_to;
   std::vector<double> edge_length;
@@ -189,6 +190,7 @@ struct JoinedInput {
       }
     }
     face_normal.resize(nf);
+    face_sphere.reserve(nf);
     std::vector<std::pair<int32_t, int32_t>> edges;
     edges.reserve(nf * 6);
     for (size_t f = 0; f < nf; ++f) {
@@ -196,6 +198,10 @@ struct JoinedInput {
       const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
       const double len = glm::length(n);
       face_normal[f] = len > 0.0 ? n / len : Vec3(0.0);
+      const Vec3 centre = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+      double radius = 0.0;
+      for (int32_t v : t) radius = std::max(radius, glm::length(mesh.positions[v] - centre));
+      face_sphere.push_back({centre, radius * (1.0 + 1e-12)});
       for (int k = 0; k < 3; ++k) {
         const int32_t a = t[k], b = t[(k + 1) % 3];
         if (a == b) continue;
@@ -321,10 +327,17 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
     const std::function<double(double)> radius_for = [lambda](double best) {
       return lambda > 0.0 ? (best - 1.0) / lambda : std::numeric_limits<double>::infinity();
     };
+    // A face's normal term and its bounding sphere rule most faces out without a closest point.
+    const std::function<double(int32_t)> bound = [&current, &input, lambda](int32_t f) {
+      const auto& [centre, radius] = input.face_sphere[f];
+      const double gap = std::max(glm::length(current->position - centre) - radius, 0.0);
+      return (1.0 + lambda * gap) * (1.0 + glm::length(current->normal - input.face_normal[f]));
+    };
     double best = 0.0;
     for (size_t q = r.begin(); q != r.end(); ++q) {
       current = &queries[q];
-      nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best);
+      nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best,
+                                     std::numeric_limits<double>::infinity(), bound);
     }
   });
 
