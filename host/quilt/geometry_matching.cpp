@@ -133,8 +133,12 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     };
     // The most promising group first, so that the others are mostly passed over whole.
     uint32_t lowest = first;
+    double lowest_bound = first < end ? group_bound(first) : 0.0;
     for (uint32_t g = first + 1; g < end; ++g)
-      if (group_bound(g) < group_bound(lowest)) lowest = g;
+      if (const double bound = group_bound(g); bound < lowest_bound) {
+        lowest = g;
+        lowest_bound = bound;
+      }
     if (lowest < end) scan(lowest);
     for (uint32_t g = first; g < end; ++g)
       if (g != lowest && group_bound(g) < best) scan(g);
