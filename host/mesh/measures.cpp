@@ -13,6 +13,18 @@ Box3 bounding_box(const std::vector<Vec3>& points) {
   return box;
 }
 
+std::vector<FaceSphere> face_spheres(const TriMesh& mesh) {
+  std::vector<FaceSphere> spheres;
+  spheres.reserve(mesh.num_faces());
+  for (const Tri& t : mesh.triangles) {
+    const Vec3 centre = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+    double radius = 0.0;
+    for (int32_t v : t) radius = std::max(radius, glm::length(mesh.positions[v] - centre));
+    spheres.push_back({centre, radius * (1.0 + 1e-12)});
+  }
+  return spheres;
+}
+
 double mean_edge_length(const TriMesh& mesh) {
   if (mesh.num_faces() == 0) return 0.0;
   double sum = 0.0;

@@ -32,6 +32,17 @@ struct Box3 {
 //! Bounding box of points.
 Box3 bounding_box(const std::vector<Vec3>& points);
 
+//! A sphere holding a face: its centroid and the distance to its farthest corner, padded (by
+//! 1e-12 relative) so that rounding never leaves a point of the face outside. The gap
+//! max(|p - centre| - radius, 0) is then a quick lower bound of the distance from p to the face.
+struct FaceSphere {
+  Vec3 centre{0.0};
+  double radius = 0.0;
+};
+
+//! One sphere per face (#F). \pre indices in range.
+std::vector<FaceSphere> face_spheres(const TriMesh& mesh);
+
 //! vertex_normals with (0,0,1) for a vertex without area: the up direction of a swatch.
 std::vector<Vec3> vertex_normals(const TriMesh& mesh);
 

@@ -165,7 +165,7 @@ struct JoinedInput {
   TriMesh mesh;
   std::vector<int32_t> face_element, face_local;
   std::vector<Vec3> face_normal;  // unit, zero for degenerate faces
-  std::vector<std::pair<Vec3, double>> face_sphere;  // centroid and the distance to the farthest corner (padded)
+  std::vector<FaceSphere> face_sphere;
   // Distinct edges in compressed rows (both directions) with their lengths.
   std::vector<int32_t> edge_offsets, edge_to;
   std::vector<double> edge_length;
@@ -190,7 +190,7 @@ struct JoinedInput {
       }
     }
     face_normal.resize(nf);
-    face_sphere.reserve(nf);
+    face_sphere = face_spheres(mesh);
     std::vector<std::pair<int32_t, int32_t>> edges;
     edges.reserve(nf * 6);
     for (size_t f = 0; f < nf; ++f) {
@@ -198,10 +198,6 @@ struct JoinedInput {
       const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
       const double len = glm::length(n);
       face_normal[f] = len > 0.0 ? n / len : Vec3(0.0);
-      const Vec3 centre = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
-      double radius = 0.0;
-      for (int32_t v : t) radius = std::max(radius, glm::length(mesh.positions[v] - centre));
-      face_sphere.push_back({centre, radius * (1.0 + 1e-12)});
       for (int k = 0; k < 3; ++k) {
         const int32_t a = t[k], b = t[(k + 1) % 3];
         if (a == b) continue;

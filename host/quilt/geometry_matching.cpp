@@ -26,17 +26,13 @@ size_t draw_index(std::mt19937_64& rng, size_t n) { return static_cast<size_t>(r
 
 GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, double cell_size,
                                  const MatchingOptions& options)
-    : swatch_(swatch), options_(options), cell_size_(cell_size) {
+    : swatch_(swatch), options_(options), cell_size_(cell_size), face_spheres_(face_spheres(swatch)) {
   face_normals_.reserve(swatch.num_faces());
   for (const Tri& t : swatch.triangles) {
     const Vec3 n = glm::cross(swatch.positions[t[1]] - swatch.positions[t[0]],
                               swatch.positions[t[2]] - swatch.positions[t[0]]);
     const double len = glm::length(n);
     face_normals_.push_back(len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0));
-    const Vec3 centre = (swatch.positions[t[0]] + swatch.positions[t[1]] + swatch.positions[t[2]]) / 3.0;
-    double radius = 0.0;
-    for (int32_t v : t) radius = std::max(radius, glm::length(swatch.positions[v] - centre));
-    face_spheres_.push_back({centre, radius * (1.0 + 1e-12)});
     // A sliver's normal is too uncertain for its plane to bound distances (as the kernel's).
     double longest2 = 0.0;
     for (int e = 0; e < 3; ++e) {
@@ -91,12 +87,10 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     const Tri& t = swatch_.triangles[f];
     return closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]).distance;
   };
-  // The hinted face (nearest at a translation close to this one) costs what it costs: starting
-  // from it the searches below stop sooner, and their minimum is the same.
   // The distance is at least that to the face's bounding sphere and (for a face with a
   // well-defined plane) to its plane.
   const auto gap_to = [&](int32_t f) {
-    double gap = std::max(glm::length(q - face_spheres_[f].first) - face_spheres_[f].second, 0.0);
+    double gap = std::max(glm::length(q - face_spheres_[f].centre) - face_spheres_[f].radius, 0.0);
     if (face_planar_[f]) {
       const Vec3& a = swatch_.positions[swatch_.triangles[f][0]];
       gap = std::max(gap, std::abs(glm::dot(q - a, face_normals_[f])) * (1.0 - 1e-12));
@@ -106,6 +100,8 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   const auto face_bound = [&](int32_t f) {
     return (1.0 + lambda * gap_to(f)) * (1.0 + glm::length(normal - face_normals_[f]));
   };
+  // The hinted face (nearest at a translation close to this one) costs what it costs: starting
+  // from it the searches below stop sooner, and their minimum is the same.
   double best = face >= 0 ? face_cost(face, distance_to(face)) : std::numeric_limits<double>::infinity();
   const int64_t voxel = grid_.voxel_of(q);
   if (voxel >= 0) {
@@ -150,8 +146,7 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   // from the swatch, the normal term widens the search to many faces facing away).
   const ClosestPoint found = bvh_->min_cost_face(
       q, [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); },
-      [&](double d) { return (d - 1.0) / lambda; }, &best, best,
-      [&](int32_t f) { return face_bound(f); });
+      [&](double d) { return (d - 1.0) / lambda; }, &best, best, face_bound);
   if (found.face >= 0) face = found.face;
   return best;
 }

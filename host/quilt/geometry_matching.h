@@ -22,6 +22,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "mesh/measures.h"
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
 #include "spatial/normal_bins.h"
@@ -92,7 +93,7 @@ class GeometryMatcher {
   MatchingOptions options_;
   double cell_size_;
   std::vector<Vec3> face_normals_;
-  std::vector<std::pair<Vec3, double>> face_spheres_;  //!< centroid and radius: a quick lower bound of Dist
+  std::vector<FaceSphere> face_spheres_;  //!< a quick lower bound of Dist
   std::vector<uint8_t> face_planar_;  //!< whether the face's plane distance is a lower bound of Dist too
   std::unique_ptr<FaceBvh> bvh_;
   NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them

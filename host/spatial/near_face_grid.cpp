@@ -12,6 +12,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "mesh/measures.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {
@@ -79,15 +80,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     }
   }
 
-  // Each face's centroid and the distance to its farthest corner (padded for rounding).
-  std::vector<std::pair<Vec3, double>> spheres;
-  spheres.reserve(mesh.num_faces());
-  for (const Tri& t : mesh.triangles) {
-    const Vec3 centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
-    double extent = 0.0;
-    for (int32_t v : t) extent = std::max(extent, glm::length(mesh.positions[v] - centroid));
-    spheres.push_back({centroid, extent * (1.0 + 1e-12) + 1e-300});
-  }
+  const std::vector<FaceSphere> spheres = face_spheres(mesh);
   // Every point within pad of a voxel lies within `radius` of its centre.
   const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * pad;
   struct Scratch {
@@ -141,7 +134,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
                 s.stamp[f] = s.current;
                 // A face whose bounding sphere lies past `cutoff` is not listed; its distance
                 // only bounds the reach, and the sphere's gap bounds that as well.
-                const double gap = glm::length(centre - spheres[f].first) - spheres[f].second;
+                const double gap = glm::length(centre - spheres[f].centre) - spheres[f].radius;
                 if (gap > cutoff) {
                   s.found.emplace_back(gap, f);
                   continue;
