@@ -30,6 +30,20 @@ TEST(MeanEdgeLength, ZeroWithoutFaces) {
   EXPECT_EQ(mean_edge_length(m), 0.0);
 }
 
+// A right triangle: the centroid, and the farthest corner's distance from it (closed form).
+TEST(FaceSpheres, CentroidAndFarthestCorner) {
+  TriMesh mesh;
+  mesh.positions = {{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {5, 5, 5}};
+  mesh.triangles = {{0, 1, 2}, {3, 3, 3}};
+  const std::vector<FaceSphere> spheres = face_spheres(mesh);
+  ASSERT_EQ(spheres.size(), 2u);
+  EXPECT_EQ(spheres[0].centre, Vec3(1, 1, 0));
+  EXPECT_NEAR(spheres[0].radius, std::sqrt(5.0), 1e-11);
+  EXPECT_GE(spheres[0].radius, std::sqrt(5.0));  // padded, never short
+  EXPECT_EQ(spheres[1].centre, Vec3(5, 5, 5));
+  EXPECT_EQ(spheres[1].radius, 0.0);
+}
+
 TEST(VertexNormals, AreaWeightedAcrossAFold) {
   // Two faces meeting at edge 0-1: one in the x-y plane (area 0.5, normal +z), one in the x-z
   // plane with twice the area (normal -y), so the shared vertices get (0,-2,1)/sqrt(5).
