@@ -74,6 +74,7 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
       {"dropped_intersecting", stats.dropped_intersecting},
+      {"joined_elements", stats.joined_elements},
       {"cells", stats.cells},
       {"cell_size", stats.cell_size},
       {"holes", stats.holes},

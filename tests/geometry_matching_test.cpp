@@ -111,8 +111,11 @@ TEST(GeometryMatching, FindsTheTranslationTheOutputWasCopiedWith) {
   auto device = engine::open_device(engine::BackendChoice::cpu);
   const double cell = 0.25;
   const GeometryMatcher matcher(*device, swatch, cell);
-  // On the grid, and off it by a fraction of a cell (found by the continuous refinement).
-  for (const glm::dvec2 truth : {glm::dvec2(2 * cell, -cell), glm::dvec2(0.37 * cell, 1.62 * cell)}) {
+  // On the grid, and off it by fractions of a cell (found by the continuous refinement).
+  std::vector<glm::dvec2> truths = {glm::dvec2(2 * cell, -cell), glm::dvec2(0.37 * cell, 1.62 * cell)};
+  std::uniform_real_distribution<double> off(-3.5 * cell, 3.5 * cell);
+  for (int k = 0; k < 6; ++k) truths.emplace_back(off(rng), off(rng));
+  for (const glm::dvec2 truth : truths) {
     std::vector<Vec3> points, normals;
     copied_points(swatch, truth, &points, &normals);
     ASSERT_GT(points.size(), 20u);
@@ -193,6 +196,33 @@ TEST(GeometryMatching, PrunedSearchChoosesWhatTheFullSearchChoosesOnChainMail) {
   options.columns = 6;
   const TriMesh swatch = make_chainmail(options);
   expect_pruning_changes_nothing(swatch, 0.3, 5, 4);
+}
+
+TEST(GeometryMatching, LinesUpAPeriodicSwatchOffTheGrid) {
+  // Chain mail copied at translations that are no whole number of cells: equally good
+  // placements recur with the lattice, so the match must cost what the true one costs (Eq. 3 is
+  // smallest there: every point lies on the swatch), wherever it lands.
+  ChainmailOptions chain = ChainmailOptions::small();
+  chain.rows = 4;
+  chain.columns = 6;
+  const TriMesh swatch = make_chainmail(chain);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  MatchingOptions options;
+  options.lambda = 1.0 / mean_edge_length(swatch);
+  options.choose_tolerance = 0.0;  // the best refined minimum, not a pick among the near-best
+  const double cell = 0.3;
+  const GeometryMatcher matcher(*device, swatch, cell, options);
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> off(-3.5 * cell, 3.5 * cell);
+  for (int k = 0; k < 6; ++k) {
+    const glm::dvec2 truth(off(rng), off(rng));
+    std::vector<Vec3> points, normals;
+    copied_points(swatch, truth, &points, &normals);
+    ASSERT_GT(points.size(), 20u);
+    std::mt19937_64 choice(k);
+    const MatchResult m = matcher.match(points, normals, grid_candidates(cell), choice);
+    EXPECT_LE(m.cost, matcher.exact_cost(points, normals, truth) * (1.0 + 1e-6)) << "truth " << truth.x << ", " << truth.y;
+  }
 }
 
 TEST(GeometryMatching, EmptySubPatchTakesASeededRandomCandidate) {

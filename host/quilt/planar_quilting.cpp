@@ -6,6 +6,7 @@
 
 #include "error.h"
 #include "mesh/topology.h"
+#include "quilt/abutting_elements.h"
 #include "quilt/broken_elements.h"
 #include "quilt/hole_tracker.h"
 #include "quilt/seed_finding.h"
@@ -136,10 +137,14 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
       kept.push_back(std::move(layer[i].mesh));
       kept_sources.push_back(layer[i].source);
     }
-  if (stats_out) *stats_out = stats;
   TriMesh result = join_elements(kept);
   result.sources.resize(result.num_faces());
   for (size_t f = 0; f < result.num_faces(); ++f) result.sources[f] = kept_sources[result.elements[f]];
+  if (options.cleanup) {
+    StageTimer timer(seconds, "cleanup");
+    stats.joined_elements = join_abutting_elements(result, kWeldTolerance);
+  }
+  if (stats_out) *stats_out = stats;
   return result;
 }
 

@@ -47,6 +47,7 @@ struct QuiltStats {
   int dropped_elements = 0;      //!< removed by the clean-up pass: dropped_open + dropped_intersecting
   int dropped_open = 0;          //!< not closed 2-manifolds although the swatch's elements are
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
+  int joined_elements = 0;       //!< planar: elements joined into one they met face to face
   int cells = 0;
   double cell_size = 0.0;
   int holes = 0;                  //!< connected groups of cells left uncovered after seed_attempts patches
