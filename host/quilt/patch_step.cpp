@@ -9,6 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <tbb/parallel_for.h>
+
 #include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
@@ -182,8 +184,9 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
       in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
     }
   }
-  for (size_t o = 0; o < outs.size(); ++o) {
-    if (out_constraints[o].empty()) continue;
+  // Each element's solve is its own: they run side by side.
+  tbb::parallel_for(size_t{0}, outs.size(), [&](size_t o) {
+    if (out_constraints[o].empty()) return;
     const std::vector<uint8_t>& pinned = out_sources[o]->pinned;
     for (size_t v = 0; v < pinned.size(); ++v)
       if (pinned[v]) out_constraints[o].push_back({static_cast<int32_t>(v), outs[o].positions[v]});
@@ -191,10 +194,11 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
     for (size_t v = 0; v < pinned.size(); ++v)
       if (pinned[v]) moved[v] = outs[o].positions[v];
     outs[o].positions = std::move(moved);
-  }
-  for (size_t i = 0; i < inputs.size(); ++i)
+  });
+  tbb::parallel_for(size_t{0}, inputs.size(), [&](size_t i) {
     if (!in_constraints[i].empty())
       inputs[i].positions = deform_with_face_constraints(inputs[i], in_constraints[i], options);
+  });
 }
 
 }  // namespace
@@ -373,8 +377,18 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   std::vector<int32_t> representative(inputs.size(), -1);
   std::vector<uint8_t> out_partnered(outs.size(), 0);
   for (const ElementRelation* partner : partners) out_partnered[partner->out_element] = 1;
-  for (const ElementRelation* partner : partners) {
+  // Each merge depends only on its partner's output element and input, which nothing before it
+  // in the loop below changes (partners are one to one; a bridge absorbs only an unpartnered
+  // element): the merges run side by side, and are committed in order, since whether a result
+  // collides depends on what was committed before it.
+  std::vector<MergeResult> merges(partners.size());
+  tbb::parallel_for(size_t{0}, partners.size(), [&](size_t k) {
+    merges[k] = merge_elements(layer[affected[partners[k]->out_element]].mesh, inputs[partners[k]->in_element],
+                               in_overlap, options.merging);
+  });
+  for (size_t k = 0; k < partners.size(); ++k) {
     check_cancel();
+    const ElementRelation* partner = partners[k];
     PlaneElement& target = layer[affected[partner->out_element]];
     representative[partner->in_element] = affected[partner->out_element];
     // A partner left unmerged gets its shape from before the deformation back, unless that shape
@@ -391,7 +405,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       forget(affected[partner->out_element]);
       target.bounds = xy_bounds(target.mesh);
     };
-    MergeResult merged = merge_elements(target.mesh, inputs[partner->in_element], in_overlap, options.merging);
+    MergeResult merged = std::move(merges[k]);
     if (merged.outcome == MergeOutcome::kept_out) {
       ++counts.kept;
       restore_shape();
