@@ -1,9 +1,12 @@
 #include "quilt/quilt_policies.h"
 
 #include <algorithm>
+#include <atomic>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
+#include <tbb/parallel_for.h>
 
 #include "mesh/measures.h"
 #include "spatial/box_grid.h"
@@ -49,12 +52,17 @@ bool passes_through(const TriMesh& candidate, const std::vector<const TriMesh*>&
                         1e-12 * glm::length(whole.extent()) + 1e-300));
   for (size_t f = 0; f < candidate.num_faces(); ++f) grid.insert(static_cast<int32_t>(f), boxes[f].lo, boxes[f].hi);
   const auto& x = candidate.positions;
-  for (const TriMesh* other : others) {
-    for (const Tri& t : other->triangles) {
+  // The others are searched side by side; any hit ends every search (the answer is the same
+  // whichever finds it).
+  std::atomic<bool> found{false};
+  tbb::parallel_for(size_t{0}, others.size(), [&](size_t o) {
+    const TriMesh& other = *others[o];
+    const auto& y = other.positions;
+    for (const Tri& t : other.triangles) {
+      if (found.load(std::memory_order_relaxed)) return;
       // Closed boxes: touching counts, as it does for the exact test.
-      const Box3 box = box_of(*other, t);
+      const Box3 box = box_of(other, t);
       if (!box.overlaps(whole)) continue;
-      const auto& y = other->positions;
       bool hit = false;
       grid.for_each_cell(glm::max(box.lo, whole.lo), glm::min(box.hi, whole.hi), [&](const std::vector<int32_t>& faces) {
         for (size_t k = 0; !hit && k < faces.size(); ++k) {
@@ -62,10 +70,13 @@ bool passes_through(const TriMesh& candidate, const std::vector<const TriMesh*>&
           hit = box.overlaps(boxes[faces[k]]) && triangles_intersect(x[a[0]], x[a[1]], x[a[2]], y[t[0]], y[t[1]], y[t[2]]);
         }
       });
-      if (hit) return true;
+      if (hit) {
+        found = true;
+        return;
+      }
     }
-  }
-  return false;
+  });
+  return found;
 }
 
 }  // namespace meshquilt
