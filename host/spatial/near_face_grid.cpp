@@ -81,131 +81,163 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   }
 
   const std::vector<FaceSphere> spheres = face_spheres(mesh);
+  const FaceBvh bvh(mesh);
   // Every point within pad of a voxel lies within `radius` of its centre.
   const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * pad;
+  // Voxels are listed in blocks of up to 2 x 2 x 2: a block gathers once the faces that can
+  // matter to any of its voxels (those within R of its centre c, R = the nearest face's distance
+  // from c + 2 h + 2 radius + list_margin, h the farthest voxel centre from c), sorted by their
+  // bounding spheres' gap from c; each voxel then reads that array only as far as its own list
+  // reaches. A voxel's list is the same as a search around the voxel alone would give: its
+  // nearest face lies within R of c, and so does every face within its list's radius (at most
+  // its nearest distance + 2 radius + list_margin, and its nearest distance is at most c's + h).
+  struct Candidate {
+    double gap;  // of the face's bounding sphere from the block's centre
+    uint32_t face;
+  };
   struct Scratch {
     std::vector<uint32_t> stamp;
     uint32_t current = 0;
+    std::vector<Candidate> candidates;
+    std::vector<double> gaps, distances;  // per candidate, from one voxel's centre (-1: not computed)
     std::vector<std::pair<double, uint32_t>> found;
     std::vector<uint32_t> label_count;
   };
   tbb::enumerable_thread_specific<Scratch> scratch;
-  // Voxels in fixed chunks, each listing into its own flat arrays, joined in order afterwards.
+  // One part per row of voxels (fixed j, k), listing into its own flat arrays, joined in order.
   struct Part {
     std::vector<uint32_t> faces, counts;
     std::vector<float> near;
     std::vector<uint32_t> group_counts, group_sizes, group_labels;  // groups per voxel; entries and label per group
     std::vector<int64_t> far_voxels;  // listing none
   };
-  constexpr int64_t kChunk = 1024;
-  std::vector<Part> parts(static_cast<size_t>((count + kChunk - 1) / kChunk));
+  std::vector<Part> parts(static_cast<size_t>(n.y) * n.z);
   grid.reach.assign(count, 0.0);
-  tbb::parallel_for(size_t{0}, parts.size(), [&](size_t part) {
+  const auto centre_of = [&](int i, int j, int k) { return grid.origin + (Vec3(i, j, k) + 0.5) * voxel; };
+  const double slack = 1e-9 * voxel;  // keeps the early stops below conservative under rounding
+  const int brick_rows_y = (n.y + 1) / 2, brick_rows_z = (n.z + 1) / 2;
+  tbb::parallel_for(0, brick_rows_y * brick_rows_z, [&](int brick_row) {
     Scratch& s = scratch.local();
     if (s.stamp.empty()) s.stamp.assign(mesh.num_faces(), 0);
-    Part& out = parts[part];
-    for (int64_t v = static_cast<int64_t>(part) * kChunk; v < std::min(count, static_cast<int64_t>(part + 1) * kChunk); ++v) {
-      const int i = static_cast<int>(v % n.x), j = static_cast<int>((v / n.x) % n.y), k = static_cast<int>(v / (int64_t{n.x} * n.y));
-      const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * voxel;
-      if (++s.current == 0) {  // the stamps wrapped around
-        std::fill(s.stamp.begin(), s.stamp.end(), 0);
-        s.current = 1;
-      }
-      s.found.clear();
-      double nearest = std::numeric_limits<double>::infinity();
-      // After shell `shell` every face with a point within (shell + 0.5) voxels of the centre
-      // (in the max norm, hence also in the Euclidean one) has been found, with its distance.
-      double cutoff = std::numeric_limits<double>::infinity();
-      auto scan_shell = [&](int shell) {
-        const glm::ivec3 a = glm::max(glm::ivec3(i, j, k) - shell, glm::ivec3(0));
-        const glm::ivec3 b = glm::min(glm::ivec3(i, j, k) + shell, n - 1);
-        // Only the cells of the shell itself: whole rows on its z and y faces, the two ends of
-        // every other row.
-        for (int z = a.z; z <= b.z; ++z)
-          for (int y = a.y; y <= b.y; ++y) {
-            const bool whole_row = std::abs(z - k) == shell || std::abs(y - j) == shell;
-            const int step = whole_row || shell == 0 ? 1 : 2 * shell;
-            for (int x = whole_row ? a.x : i - shell; x <= (whole_row ? b.x : i + shell); x += step) {
-              if (x < a.x || x > b.x) continue;
-              const int64_t cell = index(x, y, z);
+    const int j0 = 2 * (brick_row % brick_rows_y), k0 = 2 * (brick_row / brick_rows_y);
+    const int j1 = std::min(j0 + 1, n.y - 1), k1 = std::min(k0 + 1, n.z - 1);
+    for (int i0 = 0; i0 < n.x; i0 += 2) {
+      const int i1 = std::min(i0 + 1, n.x - 1);
+      const Vec3 c = 0.5 * (centre_of(i0, j0, k0) + centre_of(i1, j1, k1));
+      const double h = 0.5 * glm::length(centre_of(i1, j1, k1) - centre_of(i0, j0, k0)) * (1.0 + 1e-12);
+      const double block_nearest = bvh.closest_point(c).distance;
+      const double reach_limit = block_nearest + 2.0 * h + 2.0 * radius + list_margin;  // R
+      // Voxels whose every face lies past `far` list none (their reach comes from the BVH below).
+      const bool block_far = block_nearest - h > far;
+      s.candidates.clear();
+      if (!block_far) {
+        if (++s.current == 0) {  // the stamps wrapped around
+          std::fill(s.stamp.begin(), s.stamp.end(), 0);
+          s.current = 1;
+        }
+        // Every face with a point within R of c is bucketed in a cell of c's box of half side R.
+        const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor((c - reach_limit - grid.origin) / voxel)), glm::ivec3(0), n - 1);
+        const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::floor((c + reach_limit - grid.origin) / voxel)), glm::ivec3(0), n - 1);
+        for (int z = lo.z; z <= hi.z; ++z)
+          for (int y = lo.y; y <= hi.y; ++y)
+            for (int64_t cell = index(lo.x, y, z), end = index(hi.x, y, z); cell <= end; ++cell)
               for (uint32_t m = bucket_start[cell]; m < bucket_start[cell + 1]; ++m) {
                 const uint32_t f = bucket[m];
                 if (s.stamp[f] == s.current) continue;
                 s.stamp[f] = s.current;
-                // A face whose bounding sphere lies past `cutoff` is not listed; its distance
-                // only bounds the reach, and the sphere's gap bounds that as well.
-                const double gap = glm::length(centre - spheres[f].centre) - spheres[f].radius;
-                if (gap > cutoff) {
-                  s.found.emplace_back(gap, f);
-                  continue;
-                }
-                const Tri& t = mesh.triangles[f];
-                const double d = closest_point_on_triangle(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).distance;
-                s.found.emplace_back(d, f);
-                nearest = std::min(nearest, d);
+                const double gap = glm::length(c - spheres[f].centre) - spheres[f].radius;
+                if (gap <= reach_limit) s.candidates.push_back({gap, f});
+              }
+        std::sort(s.candidates.begin(), s.candidates.end(),
+                  [](const Candidate& x, const Candidate& y) { return x.gap != y.gap ? x.gap < y.gap : x.face < y.face; });
+        s.gaps.resize(s.candidates.size());
+        s.distances.resize(s.candidates.size());
+      }
+      for (int k = k0; k <= k1; ++k)
+        for (int j = j0; j <= j1; ++j)
+          for (int i = i0; i <= i1; ++i) {
+            Part& out = parts[static_cast<size_t>(k) * n.y + j];
+            const int64_t v = index(i, j, k);
+            const Vec3 centre = centre_of(i, j, k);
+            const double offset = glm::length(centre - c);  // a face's gap from here >= its gap from c - offset
+            const auto gap_here = [&](uint32_t f) { return glm::length(centre - spheres[f].centre) - spheres[f].radius; };
+            const auto distance = [&](uint32_t f) {
+              const Tri& t = mesh.triangles[f];
+              return closest_point_on_triangle(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).distance;
+            };
+            // The first pass finds the nearest face; the second lists. The first pass's gaps
+            // and distances (of a prefix of the candidates) are kept for the second.
+            double nearest = std::numeric_limits<double>::infinity();
+            size_t seen = 0;
+            for (; seen < s.candidates.size(); ++seen) {
+              const Candidate& cand = s.candidates[seen];
+              if (cand.gap - offset >= nearest + slack) break;
+              const double gap = gap_here(cand.face);
+              s.gaps[seen] = gap;
+              s.distances[seen] = -1.0;
+              if (gap < nearest) {
+                s.distances[seen] = distance(cand.face);
+                nearest = std::min(nearest, s.distances[seen]);
               }
             }
+            if (block_far || nearest > far) {
+              out.counts.push_back(0);
+              out.group_counts.push_back(0);
+              out.far_voxels.push_back(v);
+              continue;
+            }
+            const double list_radius = nearest + 2.0 * radius + list_margin;
+            // Faces not gathered are farther than R - offset from the centre.
+            double unlisted = reach_limit - offset;
+            s.found.clear();
+            for (size_t m = 0; m < s.candidates.size(); ++m) {
+              const Candidate& cand = s.candidates[m];
+              if (cand.gap - offset > list_radius + slack) {
+                unlisted = std::min(unlisted, cand.gap - offset);  // the nearest of the rest
+                break;
+              }
+              const double gap = m < seen ? s.gaps[m] : gap_here(cand.face);
+              if (gap > list_radius) {
+                unlisted = std::min(unlisted, gap);
+                continue;
+              }
+              const double d = m < seen && s.distances[m] >= 0.0 ? s.distances[m] : distance(cand.face);
+              if (d <= list_radius)
+                s.found.emplace_back(d, cand.face);
+              else
+                unlisted = std::min(unlisted, d);
+            }
+            const size_t listed = std::min(s.found.size(), static_cast<size_t>(max_list));
+            std::partial_sort(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed), s.found.end());
+            for (size_t m = listed; m < s.found.size(); ++m) unlisted = std::min(unlisted, s.found[m].first);
+            grid.reach[v] = std::clamp(unlisted - radius, 0.0, std::numeric_limits<double>::max());
+            out.counts.push_back(static_cast<uint32_t>(listed));
+            // Groups by label (a counting sort, which keeps each group nearest first).
+            s.label_count.assign(labels, 0);
+            for (size_t m = 0; m < listed; ++m) ++s.label_count[label(s.found[m].second)];
+            uint32_t groups = 0, offset_in_list = 0;
+            for (uint32_t l = 0; l < labels; ++l) {
+              if (s.label_count[l] == 0) continue;
+              ++groups;
+              out.group_labels.push_back(l);
+              out.group_sizes.push_back(s.label_count[l]);
+              const uint32_t size = s.label_count[l];
+              s.label_count[l] = offset_in_list;  // now where the group starts
+              offset_in_list += size;
+            }
+            out.group_counts.push_back(groups);
+            const size_t base = out.faces.size();
+            out.faces.resize(base + listed);
+            out.near.resize(base + listed);
+            for (size_t m = 0; m < listed; ++m) {
+              const double near = std::max(s.found[m].first - radius, 0.0);
+              float rounded = static_cast<float>(near);
+              if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
+              const size_t at = base + s.label_count[label(s.found[m].second)]++;
+              out.faces[at] = s.found[m].second;
+              out.near[at] = rounded;
+            }
           }
-      };
-      // Past every voxel, or once every face is found, further shells find nothing.
-      const int last_shell = std::max({n.x, n.y, n.z});
-      const auto all_found = [&] { return s.found.size() == mesh.num_faces(); };
-      int shell = 0;
-      auto covered = [&] { return (shell + 0.5) * voxel; };
-      scan_shell(0);
-      while (covered() < std::min(nearest, far) && shell < last_shell && !all_found()) scan_shell(++shell);
-      if (all_found()) shell = last_shell;
-      double lowest = std::numeric_limits<double>::infinity();
-      for (const auto& found : s.found) lowest = std::min(lowest, found.first);
-      if (lowest > far) {
-        grid.reach[v] = std::clamp(std::min(lowest, shell >= last_shell ? lowest : covered()) - radius, 0.0,
-                                   std::numeric_limits<double>::max());
-        out.counts.push_back(0);
-        out.group_counts.push_back(0);
-        out.far_voxels.push_back(v);
-        continue;
-      }
-      const double list_radius = nearest + 2.0 * radius + list_margin;
-      cutoff = list_radius;
-      while (covered() < list_radius && shell < last_shell && !all_found()) scan_shell(++shell);
-      if (all_found()) shell = last_shell;
-      // Only the faces within the list's radius need an order (most found faces lie beyond it).
-      const auto within = std::partition(s.found.begin(), s.found.end(),
-                                         [&](const auto& found) { return found.first <= list_radius; });
-      std::sort(s.found.begin(), within);
-      const size_t listed = std::min(static_cast<size_t>(within - s.found.begin()), static_cast<size_t>(max_list));
-      double unlisted = std::numeric_limits<double>::infinity();
-      for (auto it = s.found.begin() + static_cast<std::ptrdiff_t>(listed); it != s.found.end(); ++it)
-        unlisted = std::min(unlisted, it->first);
-      // Finite even when every face is listed, so that lambda * reach is never 0 x infinity.
-      grid.reach[v] = std::clamp(std::min(unlisted, shell >= last_shell ? unlisted : covered()) - radius, 0.0,
-                                 std::numeric_limits<double>::max());
-      out.counts.push_back(static_cast<uint32_t>(listed));
-      // Groups by label (a counting sort, which keeps each group nearest first).
-      s.label_count.assign(labels, 0);
-      for (size_t m = 0; m < listed; ++m) ++s.label_count[label(s.found[m].second)];
-      uint32_t groups = 0, offset = 0;
-      for (uint32_t l = 0; l < labels; ++l) {
-        if (s.label_count[l] == 0) continue;
-        ++groups;
-        out.group_labels.push_back(l);
-        out.group_sizes.push_back(s.label_count[l]);
-        const uint32_t size = s.label_count[l];
-        s.label_count[l] = offset;  // now where the group starts
-        offset += size;
-      }
-      out.group_counts.push_back(groups);
-      const size_t base = out.faces.size();
-      out.faces.resize(base + listed);
-      out.near.resize(base + listed);
-      for (size_t m = 0; m < listed; ++m) {
-        const double near = std::max(s.found[m].first - radius, 0.0);
-        float rounded = static_cast<float>(near);
-        if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
-        const size_t at = base + s.label_count[label(s.found[m].second)]++;
-        out.faces[at] = s.found[m].second;
-        out.near[at] = rounded;
-      }
     }
   });
   // A far voxel's reach is the nearest face's distance from its centre, less the radius: the
@@ -214,7 +246,6 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   std::vector<int64_t> far_voxels;
   for (const Part& part : parts) far_voxels.insert(far_voxels.end(), part.far_voxels.begin(), part.far_voxels.end());
   if (!far_voxels.empty()) {
-    const FaceBvh bvh(mesh);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, far_voxels.size(), 256), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t m = range.begin(); m != range.end(); ++m) {
         const int64_t w = far_voxels[m];
