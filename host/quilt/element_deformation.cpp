@@ -33,8 +33,9 @@ struct OneRing {
 
 OneRing one_ring(const TriMesh& mesh) {
   const int32_t nv = static_cast<int32_t>(mesh.num_vertices());
-  std::vector<std::pair<int32_t, int32_t>> edges;
-  edges.reserve(mesh.num_faces() * 6);
+  // Each edge's two directions bucketed by their first vertex, then each bucket sorted and
+  // deduplicated: small sorts instead of one over all 6F directed edges.
+  std::vector<int32_t> first(nv + 1, 0);
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
     const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
@@ -44,20 +45,29 @@ OneRing one_ring(const TriMesh& mesh) {
                          std::to_string(nv) + ")");
       }
       if (a == b) continue;
-      edges.emplace_back(a, b);
-      edges.emplace_back(b, a);
+      ++first[a + 1];
+      ++first[b + 1];
     }
   }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<int32_t> all(first[nv]);
+  std::vector<int32_t> fill(first.begin(), first.end() - 1);
+  for (const Tri& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      if (a == b) continue;
+      all[fill[a]++] = b;
+      all[fill[b]++] = a;
+    }
   OneRing r;
   r.offsets.assign(nv + 1, 0);
-  r.ring.reserve(edges.size());
-  for (const auto& [a, b] : edges) {
-    ++r.offsets[a + 1];
-    r.ring.push_back(b);
+  r.ring.reserve(all.size() / 2);
+  for (int32_t v = 0; v < nv; ++v) {
+    const auto begin = all.begin() + first[v], end = all.begin() + first[v + 1];
+    std::sort(begin, end);
+    r.ring.insert(r.ring.end(), begin, std::unique(begin, end));
+    r.offsets[v + 1] = static_cast<int32_t>(r.ring.size());
   }
-  std::partial_sum(r.offsets.begin(), r.offsets.end(), r.offsets.begin());
   return r;
 }
 
