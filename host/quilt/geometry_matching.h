@@ -40,7 +40,7 @@ struct MatchingOptions {
   double rescore_margin = 0.1;   //!< the near set: candidates whose exact cost <= best x (1 + margin)
   int max_refined = 4;           //!< refine at most this many local minima of the exact cost
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
-  int refine_iterations = 8;     //!< at most this many exact evaluations refine a local minimum
+  int refine_iterations = 8;     //!< at most this many confirmed moves refine a local minimum
   bool prune = true;             //!< evaluate exactly only candidates whose bound can matter
 };
 
