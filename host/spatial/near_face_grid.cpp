@@ -115,6 +115,114 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   grid.reach.assign(count, 0.0);
   const auto centre_of = [&](int i, int j, int k) { return grid.origin + (Vec3(i, j, k) + 0.5) * voxel; };
   const double slack = 1e-9 * voxel;  // keeps the early stops below conservative under rounding
+  // The faces that can matter to a block's voxels, nearest sphere first (see above).
+  const auto gather = [&](Scratch& s, const Vec3& c, double reach_limit) {
+    if (++s.current == 0) {  // the stamps wrapped around
+      std::fill(s.stamp.begin(), s.stamp.end(), 0);
+      s.current = 1;
+    }
+    // Every face with a point within R of c is bucketed in a cell of c's box of half side R.
+    const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor((c - reach_limit - grid.origin) / voxel)), glm::ivec3(0), n - 1);
+    const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::floor((c + reach_limit - grid.origin) / voxel)), glm::ivec3(0), n - 1);
+    for (int z = lo.z; z <= hi.z; ++z)
+      for (int y = lo.y; y <= hi.y; ++y)
+        for (int64_t cell = index(lo.x, y, z), end = index(hi.x, y, z); cell <= end; ++cell)
+          for (uint32_t m = bucket_start[cell]; m < bucket_start[cell + 1]; ++m) {
+            const uint32_t f = bucket[m];
+            if (s.stamp[f] == s.current) continue;
+            s.stamp[f] = s.current;
+            const double gap = glm::length(c - spheres[f].centre) - spheres[f].radius;
+            if (gap <= reach_limit) s.candidates.push_back({gap, f});
+          }
+    std::sort(s.candidates.begin(), s.candidates.end(),
+              [](const Candidate& x, const Candidate& y) { return x.gap != y.gap ? x.gap < y.gap : x.face < y.face; });
+    s.gaps.resize(s.candidates.size());
+    s.distances.resize(s.candidates.size());
+  };
+  // Lists voxel (i, j, k) of the block around c from the block's candidates.
+  const auto list_voxel = [&](Scratch& s, Part& out, int i, int j, int k, const Vec3& c, double reach_limit,
+                              bool block_far) {
+    const int64_t v = index(i, j, k);
+    const Vec3 centre = centre_of(i, j, k);
+    const double offset = glm::length(centre - c);  // a face's gap from here >= its gap from c - offset
+    const auto gap_here = [&](uint32_t f) { return glm::length(centre - spheres[f].centre) - spheres[f].radius; };
+    const auto distance = [&](uint32_t f) {
+      const Tri& t = mesh.triangles[f];
+      return closest_point_on_triangle(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).distance;
+    };
+    // The first pass finds the nearest face; the second lists. The first pass's gaps and
+    // distances (of a prefix of the candidates) are kept for the second.
+    double nearest = std::numeric_limits<double>::infinity();
+    size_t seen = 0;
+    for (; seen < s.candidates.size(); ++seen) {
+      const Candidate& cand = s.candidates[seen];
+      if (cand.gap - offset >= nearest + slack) break;
+      const double gap = gap_here(cand.face);
+      s.gaps[seen] = gap;
+      s.distances[seen] = -1.0;
+      if (gap < nearest) {
+        s.distances[seen] = distance(cand.face);
+        nearest = std::min(nearest, s.distances[seen]);
+      }
+    }
+    if (block_far || nearest > far) {
+      out.counts.push_back(0);
+      out.group_counts.push_back(0);
+      out.far_voxels.push_back(v);
+      return;
+    }
+    const double list_radius = nearest + 2.0 * radius + list_margin;
+    // Faces not gathered are farther than R - offset from the centre.
+    double unlisted = reach_limit - offset;
+    s.found.clear();
+    for (size_t m = 0; m < s.candidates.size(); ++m) {
+      const Candidate& cand = s.candidates[m];
+      if (cand.gap - offset > list_radius + slack) {
+        unlisted = std::min(unlisted, cand.gap - offset);  // the nearest of the rest
+        break;
+      }
+      const double gap = m < seen ? s.gaps[m] : gap_here(cand.face);
+      if (gap > list_radius) {
+        unlisted = std::min(unlisted, gap);
+        continue;
+      }
+      const double d = m < seen && s.distances[m] >= 0.0 ? s.distances[m] : distance(cand.face);
+      if (d <= list_radius)
+        s.found.emplace_back(d, cand.face);
+      else
+        unlisted = std::min(unlisted, d);
+    }
+    const size_t listed = std::min(s.found.size(), static_cast<size_t>(max_list));
+    std::partial_sort(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed), s.found.end());
+    for (size_t m = listed; m < s.found.size(); ++m) unlisted = std::min(unlisted, s.found[m].first);
+    grid.reach[v] = std::clamp(unlisted - radius, 0.0, std::numeric_limits<double>::max());
+    out.counts.push_back(static_cast<uint32_t>(listed));
+    // Groups by label (a counting sort, which keeps each group nearest first).
+    s.label_count.assign(labels, 0);
+    for (size_t m = 0; m < listed; ++m) ++s.label_count[label(s.found[m].second)];
+    uint32_t groups = 0, offset_in_list = 0;
+    for (uint32_t l = 0; l < labels; ++l) {
+      if (s.label_count[l] == 0) continue;
+      ++groups;
+      out.group_labels.push_back(l);
+      out.group_sizes.push_back(s.label_count[l]);
+      const uint32_t size = s.label_count[l];
+      s.label_count[l] = offset_in_list;  // now where the group starts
+      offset_in_list += size;
+    }
+    out.group_counts.push_back(groups);
+    const size_t base = out.faces.size();
+    out.faces.resize(base + listed);
+    out.near.resize(base + listed);
+    for (size_t m = 0; m < listed; ++m) {
+      const double near = std::max(s.found[m].first - radius, 0.0);
+      float rounded = static_cast<float>(near);
+      if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
+      const size_t at = base + s.label_count[label(s.found[m].second)]++;
+      out.faces[at] = s.found[m].second;
+      out.near[at] = rounded;
+    }
+  };
   const int brick_rows_y = (n.y + 1) / 2, brick_rows_z = (n.z + 1) / 2;
   tbb::parallel_for(0, brick_rows_y * brick_rows_z, [&](int brick_row) {
     Scratch& s = scratch.local();
@@ -130,119 +238,15 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       // Voxels whose every face lies past `far` list none (their reach comes from the BVH below).
       const bool block_far = block_nearest - h > far;
       s.candidates.clear();
-      if (!block_far) {
-        if (++s.current == 0) {  // the stamps wrapped around
-          std::fill(s.stamp.begin(), s.stamp.end(), 0);
-          s.current = 1;
-        }
-        // Every face with a point within R of c is bucketed in a cell of c's box of half side R.
-        const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor((c - reach_limit - grid.origin) / voxel)), glm::ivec3(0), n - 1);
-        const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::floor((c + reach_limit - grid.origin) / voxel)), glm::ivec3(0), n - 1);
-        for (int z = lo.z; z <= hi.z; ++z)
-          for (int y = lo.y; y <= hi.y; ++y)
-            for (int64_t cell = index(lo.x, y, z), end = index(hi.x, y, z); cell <= end; ++cell)
-              for (uint32_t m = bucket_start[cell]; m < bucket_start[cell + 1]; ++m) {
-                const uint32_t f = bucket[m];
-                if (s.stamp[f] == s.current) continue;
-                s.stamp[f] = s.current;
-                const double gap = glm::length(c - spheres[f].centre) - spheres[f].radius;
-                if (gap <= reach_limit) s.candidates.push_back({gap, f});
-              }
-        std::sort(s.candidates.begin(), s.candidates.end(),
-                  [](const Candidate& x, const Candidate& y) { return x.gap != y.gap ? x.gap < y.gap : x.face < y.face; });
-        s.gaps.resize(s.candidates.size());
-        s.distances.resize(s.candidates.size());
-      }
+      if (!block_far) gather(s, c, reach_limit);
       for (int k = k0; k <= k1; ++k)
         for (int j = j0; j <= j1; ++j)
-          for (int i = i0; i <= i1; ++i) {
-            Part& out = parts[static_cast<size_t>(k) * n.y + j];
-            const int64_t v = index(i, j, k);
-            const Vec3 centre = centre_of(i, j, k);
-            const double offset = glm::length(centre - c);  // a face's gap from here >= its gap from c - offset
-            const auto gap_here = [&](uint32_t f) { return glm::length(centre - spheres[f].centre) - spheres[f].radius; };
-            const auto distance = [&](uint32_t f) {
-              const Tri& t = mesh.triangles[f];
-              return closest_point_on_triangle(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]).distance;
-            };
-            // The first pass finds the nearest face; the second lists. The first pass's gaps
-            // and distances (of a prefix of the candidates) are kept for the second.
-            double nearest = std::numeric_limits<double>::infinity();
-            size_t seen = 0;
-            for (; seen < s.candidates.size(); ++seen) {
-              const Candidate& cand = s.candidates[seen];
-              if (cand.gap - offset >= nearest + slack) break;
-              const double gap = gap_here(cand.face);
-              s.gaps[seen] = gap;
-              s.distances[seen] = -1.0;
-              if (gap < nearest) {
-                s.distances[seen] = distance(cand.face);
-                nearest = std::min(nearest, s.distances[seen]);
-              }
-            }
-            if (block_far || nearest > far) {
-              out.counts.push_back(0);
-              out.group_counts.push_back(0);
-              out.far_voxels.push_back(v);
-              continue;
-            }
-            const double list_radius = nearest + 2.0 * radius + list_margin;
-            // Faces not gathered are farther than R - offset from the centre.
-            double unlisted = reach_limit - offset;
-            s.found.clear();
-            for (size_t m = 0; m < s.candidates.size(); ++m) {
-              const Candidate& cand = s.candidates[m];
-              if (cand.gap - offset > list_radius + slack) {
-                unlisted = std::min(unlisted, cand.gap - offset);  // the nearest of the rest
-                break;
-              }
-              const double gap = m < seen ? s.gaps[m] : gap_here(cand.face);
-              if (gap > list_radius) {
-                unlisted = std::min(unlisted, gap);
-                continue;
-              }
-              const double d = m < seen && s.distances[m] >= 0.0 ? s.distances[m] : distance(cand.face);
-              if (d <= list_radius)
-                s.found.emplace_back(d, cand.face);
-              else
-                unlisted = std::min(unlisted, d);
-            }
-            const size_t listed = std::min(s.found.size(), static_cast<size_t>(max_list));
-            std::partial_sort(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed), s.found.end());
-            for (size_t m = listed; m < s.found.size(); ++m) unlisted = std::min(unlisted, s.found[m].first);
-            grid.reach[v] = std::clamp(unlisted - radius, 0.0, std::numeric_limits<double>::max());
-            out.counts.push_back(static_cast<uint32_t>(listed));
-            // Groups by label (a counting sort, which keeps each group nearest first).
-            s.label_count.assign(labels, 0);
-            for (size_t m = 0; m < listed; ++m) ++s.label_count[label(s.found[m].second)];
-            uint32_t groups = 0, offset_in_list = 0;
-            for (uint32_t l = 0; l < labels; ++l) {
-              if (s.label_count[l] == 0) continue;
-              ++groups;
-              out.group_labels.push_back(l);
-              out.group_sizes.push_back(s.label_count[l]);
-              const uint32_t size = s.label_count[l];
-              s.label_count[l] = offset_in_list;  // now where the group starts
-              offset_in_list += size;
-            }
-            out.group_counts.push_back(groups);
-            const size_t base = out.faces.size();
-            out.faces.resize(base + listed);
-            out.near.resize(base + listed);
-            for (size_t m = 0; m < listed; ++m) {
-              const double near = std::max(s.found[m].first - radius, 0.0);
-              float rounded = static_cast<float>(near);
-              if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
-              const size_t at = base + s.label_count[label(s.found[m].second)]++;
-              out.faces[at] = s.found[m].second;
-              out.near[at] = rounded;
-            }
-          }
+          for (int i = i0; i <= i1; ++i) list_voxel(s, parts[static_cast<size_t>(k) * n.y + j], i, j, k, c, reach_limit, block_far);
     }
   });
-  // A far voxel's reach is the nearest face's distance from its centre, less the radius: the
-  // shells above stop at `far`, which between widely spaced elements (the fruit) bounded points
-  // many times nearer than they are, and left the kernel's bounds too low to prune candidates.
+  // A far voxel's reach is the nearest face's distance from its centre, less the radius: bounding
+  // it by `far` alone, between widely spaced elements (the fruit), bounded points many times
+  // nearer than they are, and left the kernel's bounds too low to prune candidates.
   std::vector<int64_t> far_voxels;
   for (const Part& part : parts) far_voxels.insert(far_voxels.end(), part.far_voxels.begin(), part.far_voxels.end());
   if (!far_voxels.empty()) {
