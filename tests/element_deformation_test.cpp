@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -160,6 +161,44 @@ TEST(ElementDeformation, MatchesDenseLeastSquaresWithFaceConstraints) {
   const std::vector<Vec3> w = deform_with_face_constraints(m, fc);
   EXPECT_LE(max_error(w, dense_reference(m, rows, 1.0)), 1e-9);
   EXPECT_GT(max_error(w, m.positions), 1e-2);
+}
+
+// Solves reuse the fill-reducing ordering of an earlier system with the same sparsity pattern
+// (per thread). Reused or not, the positions must be the same bit for bit; a pattern of the
+// same size but other connections (the grid with its vertices renumbered) must not be given
+// another's ordering, nor must a pattern pushed out of the cache and met again.
+TEST(ElementDeformation, RepeatedPatternsSolveAsFreshOnes) {
+  const TriMesh base = grid(6);
+  TriMesh renumbered = base;
+  std::vector<int32_t> to(base.num_vertices());
+  for (size_t v = 0; v < to.size(); ++v) to[v] = static_cast<int32_t>((v * 17) % to.size());  // 49 vertices, 17 coprime
+  for (size_t v = 0; v < to.size(); ++v) renumbered.positions[to[v]] = base.positions[v];
+  for (Tri& t : renumbered.triangles)
+    for (int32_t& v : t) v = to[v];
+  const std::vector<VertexConstraint> cons = {{0, Vec3(0.1, -0.2, 0.3)}, {24, Vec3(1.0, 0.9, -0.2)}, {48, Vec3(1.9, 1.4, 0.4)}};
+  std::vector<VertexConstraint> renumbered_cons = cons;
+  for (VertexConstraint& c : renumbered_cons) c.vertex = to[c.vertex];
+  // Grids of other sizes, enough to push both patterns out of the cache.
+  std::vector<TriMesh> others;
+  for (int n = 2; n < 14; ++n) others.push_back(grid(n));
+
+  const auto fresh = [](const TriMesh& m, const std::vector<VertexConstraint>& c) {
+    std::vector<Vec3> w;
+    std::thread([&] { w = deform_with_vertex_constraints(m, c); }).join();
+    return w;
+  };
+  const std::vector<Vec3> expected = fresh(base, cons);
+  const std::vector<Vec3> expected_renumbered = fresh(renumbered, renumbered_cons);
+  EXPECT_GT(max_error(expected, base.positions), 1e-2);
+  for (int round = 0; round < 3; ++round) {
+    EXPECT_EQ(deform_with_vertex_constraints(base, cons), expected) << "round " << round;
+    EXPECT_EQ(deform_with_vertex_constraints(renumbered, renumbered_cons), expected_renumbered) << "round " << round;
+    EXPECT_EQ(deform_with_vertex_constraints(base, cons), expected) << "round " << round;
+    if (round == 1)
+      for (const TriMesh& m : others) deform_with_vertex_constraints(m, {{0, Vec3(0.0, 0.0, 1.0)}});
+  }
+  // The renumbered grid's solution is the base's, renumbered (to rounding).
+  for (size_t v = 0; v < to.size(); ++v) EXPECT_LE(glm::length(expected_renumbered[to[v]] - expected[v]), 1e-9);
 }
 
 TEST(ElementDeformation, UnconstrainedPartsAndIsolatedVerticesStay) {
