@@ -88,8 +88,11 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
     const double radius = std::max({glm::length(da - glm::dvec3(middle)), glm::length(db - glm::dvec3(middle)),
                                     glm::length(dc - glm::dvec3(middle))});
     const float padded = static_cast<float>(radius * (1.0 + 1e-5) + 1e-7 * std::sqrt(longest2));
+    // Twice the area at least a tenth of the longest edge squared: no corner sharper than about
+    // 5.7 degrees, where finding the nearest feature by region is safe in float.
+    const bool well_shaped = twice_area > 0.1 * longest2;
     faces[f] = {glm::vec4(middle, padded), glm::vec4(swatch.normals[f], degenerate ? 1.0f : 0.0f),
-                glm::vec4(a, 0.0f), glm::vec4(b, 0.0f), glm::vec4(c, 0.0f)};
+                glm::vec4(a, well_shaped ? 1.0f : 0.0f), glm::vec4(b, 0.0f), glm::vec4(c, 0.0f)};
   }
   // Distances rounded down, so no bound on the device exceeds what the grid guarantees.
   auto round_down = [](double value) {

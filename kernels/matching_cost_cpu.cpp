@@ -16,26 +16,53 @@ namespace {
 using namespace matching_cost_layout;
 using glm::vec3;
 
-float segment_distance2(vec3 p, vec3 a, vec3 b) {
+constexpr uint kMaxGroups = 64;  // per voxel, on the stack; a voxel has at most one per normal bin
+
+inline float segment_distance2(vec3 p, vec3 a, vec3 b) {
   const vec3 ab = b - a;
   const float t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-30f), 0.0f, 1.0f);
   const vec3 d = p - (a + t * ab);
   return glm::dot(d, d);
 }
 
-// The shader's distance: to the plane when p projects inside, else to the nearest edge; edges
-// only for a degenerate triangle. The shader computes both and selects, so that SIMD lanes never
-// diverge; here a branch skips the edges when the plane decides (inside, the plane is the
-// nearest, up to rounding that the bound's margin covers).
-float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate) {
-  const vec3 n = glm::cross(b - a, c - a);
-  const float nn = glm::dot(n, n);
-  if (!degenerate && nn > 0.0f && glm::dot(glm::cross(b - p, c - p), n) >= 0.0f &&
-      glm::dot(glm::cross(c - p, a - p), n) >= 0.0f && glm::dot(glm::cross(a - p, b - p), n) >= 0.0f) {
-    const float h = glm::dot(p - a, n);
-    return h * h / std::max(nn, 1e-30f);  // as the shader divides
+// The squared distance from p to triangle abc. The shader measures the plane when p projects
+// inside and else every edge, selecting between them so that SIMD lanes never diverge; edges
+// only for a degenerate triangle. Here a well-shaped triangle has the Voronoi region of p pick
+// the one feature to measure (Ericson, Real-Time Collision Detection, 5.1.5), measured as the
+// shader measures it. Other triangles keep the shader's way: rounding could put p in the wrong
+// region of a thin one and measure a feature farther than the nearest, and a bound must never
+// exceed the distance (the shader's inside test errs only toward the plane, which is nearer).
+float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate, bool well_shaped) {
+  const auto edges = [&] {
+    return std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
+  };
+  if (degenerate) return edges();
+  const vec3 ab = b - a, ac = c - a, ap = p - a;
+  const auto plane = [&] {
+    const vec3 n = glm::cross(ab, ac);
+    const float h = glm::dot(ap, n);
+    return h * h / std::max(glm::dot(n, n), 1e-30f);  // as the shader divides
+  };
+  if (!well_shaped) {
+    const vec3 n = glm::cross(ab, ac);
+    if (glm::dot(n, n) > 0.0f && glm::dot(glm::cross(b - p, c - p), n) >= 0.0f &&
+        glm::dot(glm::cross(c - p, a - p), n) >= 0.0f && glm::dot(glm::cross(a - p, b - p), n) >= 0.0f)
+      return plane();
+    return edges();
   }
-  return std::min(segment_distance2(p, a, b), std::min(segment_distance2(p, b, c), segment_distance2(p, c, a)));
+  const auto to = [&](vec3 corner) { return glm::dot(p - corner, p - corner); };
+  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0f && d2 <= 0.0f) return to(a);
+  const vec3 bp = p - b;
+  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0f && d4 <= d3) return to(b);
+  if (d1 * d4 - d3 * d2 <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) return segment_distance2(p, a, b);
+  const vec3 cp = p - c;
+  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0f && d5 <= d6) return to(c);
+  if (d5 * d2 - d1 * d6 <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return segment_distance2(p, c, a);
+  if (d3 * d6 - d5 * d4 <= 0.0f && d4 - d3 >= 0.0f && d5 - d6 >= 0.0f) return segment_distance2(p, b, c);
+  return plane();
 }
 
 struct Swatch {
@@ -61,7 +88,7 @@ float scan_group(const Swatch& s, const MatchingGroup& g, float factor, vec3 q, 
     // The distance to the face's plane is at most the distance to the face.
     const float plane_gap = f.normal.w == 0.0f ? std::abs(glm::dot(q - vec3(f.a), vec3(f.normal))) : 0.0f;
     if ((1.0f + lambda * std::max(sphere_gap, plane_gap)) * normal_factor >= best) continue;
-    const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f);
+    const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f, f.a.w != 0.0f);
     best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
   }
   return best;
@@ -79,21 +106,26 @@ float point_bound(const Swatch& s, vec3 q, vec3 n, const float* factors) {
   const MatchingVoxel& voxel = s.voxels[(cell.z * params.grid_ny + cell.y) * params.grid_nx + cell.x];
   float best = 1.0f + lambda * voxel.reach;
   // The group most likely to hold the minimum first; then the others that can still beat it.
-  uint lowest = voxel.first;
+  // Each group's bound is computed once (a voxel has at most one group per normal bin).
+  float bounds[kMaxGroups];
+  const MatchingGroup* groups = s.groups + voxel.first;
+  const uint count = std::min<uint>(voxel.count, kMaxGroups);
+  uint lowest = 0;
   float lowest_bound = best;
-  for (uint g = voxel.first; g < voxel.first + voxel.count; ++g) {
-    const float bound = (1.0f + lambda * s.groups[g].near) * factors[s.groups[g].bin];
-    if (bound < lowest_bound) {
-      lowest_bound = bound;
+  for (uint g = 0; g < count; ++g) {
+    bounds[g] = (1.0f + lambda * groups[g].near) * factors[groups[g].bin];
+    if (bounds[g] < lowest_bound) {
+      lowest_bound = bounds[g];
       lowest = g;
     }
   }
-  if (lowest_bound < best) best = scan_group(s, s.groups[lowest], factors[s.groups[lowest].bin], q, n, best);
-  for (uint g = voxel.first; g < voxel.first + voxel.count; ++g) {
-    const MatchingGroup& group = s.groups[g];
-    if (g != lowest && (1.0f + lambda * group.near) * factors[group.bin] < best)
-      best = scan_group(s, group, factors[group.bin], q, n, best);
-  }
+  if (lowest_bound < best) best = scan_group(s, groups[lowest], factors[groups[lowest].bin], q, n, best);
+  for (uint g = 0; g < count; ++g)
+    if (g != lowest && bounds[g] < best) best = scan_group(s, groups[g], factors[groups[g].bin], q, n, best);
+  // More groups than bins cannot come from a grid, but a bound must not skip any.
+  for (uint g = count; g < voxel.count; ++g)
+    if ((1.0f + lambda * groups[g].near) * factors[groups[g].bin] < best)
+      best = scan_group(s, groups[g], factors[groups[g].bin], q, n, best);
   return best;
 }
 

@@ -34,7 +34,7 @@ using vec4 = glm::vec4;
 struct MatchingFace {
   vec4 sphere; // xyz: centroid; w: radius of the bounding sphere around it (padded)
   vec4 normal; // xyz: the unit face normal Eq. 1 uses; w: 1 if the triangle is degenerate, else 0
-  vec4 a;      // xyz: vertex 0
+  vec4 a;      // xyz: vertex 0; w: 1 if the triangle is well shaped (for the CPU twin), else 0
   vec4 b;      // xyz: vertex 1
   vec4 c;      // xyz: vertex 2
 };
