@@ -38,8 +38,8 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate, bool w
   };
   if (degenerate) return edges();
   const vec3 ab = b - a, ac = c - a, ap = p - a;
-  const auto plane = [&] {
-    const vec3 n = glm::cross(ab, ac);
+  // n = ab x ac, computed only where a plane is measured or tested against.
+  const auto plane = [&](vec3 n) {
     const float h = glm::dot(ap, n);
     return h * h / std::max(glm::dot(n, n), 1e-30f);  // as the shader divides
   };
@@ -47,7 +47,7 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate, bool w
     const vec3 n = glm::cross(ab, ac);
     if (glm::dot(n, n) > 0.0f && glm::dot(glm::cross(b - p, c - p), n) >= 0.0f &&
         glm::dot(glm::cross(c - p, a - p), n) >= 0.0f && glm::dot(glm::cross(a - p, b - p), n) >= 0.0f)
-      return plane();
+      return plane(n);
     return edges();
   }
   const auto to = [&](vec3 corner) { return glm::dot(p - corner, p - corner); };
@@ -62,7 +62,7 @@ float triangle_distance2(vec3 p, vec3 a, vec3 b, vec3 c, bool degenerate, bool w
   if (d6 >= 0.0f && d5 <= d6) return to(c);
   if (d5 * d2 - d1 * d6 <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return segment_distance2(p, c, a);
   if (d3 * d6 - d5 * d4 <= 0.0f && d4 - d3 >= 0.0f && d5 - d6 >= 0.0f) return segment_distance2(p, b, c);
-  return plane();
+  return plane(glm::cross(ab, ac));
 }
 
 struct Swatch {
