@@ -1,4 +1,4 @@
-// Welding and components, against constructed answers and brute-force references written here.
+// Welding, components and surface defects, against constructed answers and brute-force references written here.
 
 #include <gtest/gtest.h>
 
@@ -271,6 +271,73 @@ TEST(Topology, SplitWithoutElementsUsesComponents) {
   EXPECT_EQ(parts[1].positions, b.positions);
   EXPECT_EQ(parts[1].triangles, b.triangles);
   EXPECT_NEAR(signed_volume(parts[0]), 1.0 / 6.0, 1e-15);
+}
+
+// Random face soups over a few vertices (repeated and reversed edges, faces repeating a vertex),
+// against counts from a map of directed edges and fans grown face by face.
+TEST(Topology, SurfaceDefectsMatchBruteForceOnRandomSoups) {
+  std::mt19937 random(7);
+  int64_t seen_misoriented = 0, seen_nonmanifold = 0, seen_pinched = 0;
+  for (int round = 0; round < 300; ++round) {
+    const int vertices = 4 + round % 9;
+    std::uniform_int_distribution<int32_t> vertex(0, vertices - 1);
+    TriMesh m;
+    m.positions.assign(static_cast<size_t>(vertices) + 2, Vec3(0.0));  // the last two unused
+    const int faces = 1 + round % 14;
+    for (int f = 0; f < faces; ++f) {
+      Tri t{vertex(random), vertex(random), vertex(random)};
+      if (random() % 4 != 0)  // mostly proper faces
+        while (t[1] == t[0] || t[2] == t[0] || t[2] == t[1]) t = {vertex(random), vertex(random), vertex(random)};
+      m.triangles.push_back(t);
+    }
+    std::map<std::pair<int32_t, int32_t>, int64_t> directed;
+    int64_t degenerate = 0;
+    for (const Tri& t : m.triangles) {
+      degenerate += t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+      for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+    }
+    int64_t boundary = 0, nonmanifold = 0, misoriented = 0, edges = 0;
+    for (const auto& [e, n] : directed) {
+      if (e.first > e.second && directed.count({e.second, e.first})) continue;  // counted from the other side
+      const int64_t back = e.first == e.second ? 0 : (directed.count({e.second, e.first}) ? directed[{e.second, e.first}] : 0);
+      ++edges;
+      if (n + back == 1) ++boundary;
+      else if (n + back > 2) ++nonmanifold;
+      else if (!(n == 1 && back == 1)) ++misoriented;
+    }
+    int64_t pinched = 0, used = 0;
+    for (int32_t v = 0; v < static_cast<int32_t>(m.positions.size()); ++v) {
+      std::vector<size_t> around;
+      for (size_t f = 0; f < m.triangles.size(); ++f)
+        if (std::count(m.triangles[f].begin(), m.triangles[f].end(), v) > 0) around.push_back(f);
+      if (around.empty()) continue;
+      ++used;
+      std::vector<size_t> fan{around[0]};
+      for (size_t k = 0; k < fan.size(); ++k)
+        for (size_t g : around) {
+          if (std::find(fan.begin(), fan.end(), g) != fan.end()) continue;
+          int shared = 0;
+          for (int32_t a : m.triangles[fan[k]])
+            for (int32_t b : m.triangles[g]) shared += a == b;
+          if (shared >= 2) fan.push_back(g);
+        }
+      pinched += fan.size() < around.size();
+    }
+    const SurfaceReport r = inspect_surface(m);
+    SCOPED_TRACE(round);
+    EXPECT_EQ(r.boundary_edges, boundary);
+    EXPECT_EQ(r.nonmanifold_edges, nonmanifold);
+    EXPECT_EQ(r.misoriented_edges, misoriented);
+    EXPECT_EQ(r.degenerate_faces, degenerate);
+    EXPECT_EQ(r.pinched_vertices, pinched);
+    EXPECT_EQ(r.euler, used - edges + static_cast<int64_t>(m.triangles.size()));
+    seen_misoriented += misoriented;
+    seen_nonmanifold += nonmanifold;
+    seen_pinched += pinched;
+  }
+  EXPECT_GT(seen_misoriented, 0);
+  EXPECT_GT(seen_nonmanifold, 0);
+  EXPECT_GT(seen_pinched, 0);
 }
 
 }  // namespace

@@ -10,7 +10,13 @@ namespace meshquilt {
 
 class DisjointSets {
  public:
-  explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  explicit DisjointSets(size_t n) { reset(n); }
+
+  //! Back to n singletons, keeping the storage (for many small sets in turn).
+  void reset(size_t n) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
 
   int32_t find(int32_t x) {
     while (parent_[x] != x) {

@@ -252,32 +252,28 @@ std::vector<std::array<int32_t, 3>> face_neighbors(const TriMesh& mesh) {
 
 SurfaceReport inspect_surface(const TriMesh& mesh) {
   SurfaceReport r;
-  std::vector<uint64_t> directed;
-  directed.reserve(mesh.num_faces() * 3);
+  // Each half-edge as its undirected edge {x <= y} and one bit for the direction y -> x, so one
+  // sort groups every edge with both its directions (vertex indices are below 2^31).
+  std::vector<uint64_t> halves;
+  halves.reserve(mesh.num_faces() * 3);
   for (const Tri& t : mesh.triangles) {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ++r.degenerate_faces;
-    for (int k = 0; k < 3; ++k) directed.push_back(directed_edge_key(t[k], t[(k + 1) % 3]));
-  }
-  std::sort(directed.begin(), directed.end());
-  auto count_directed = [&](uint64_t key) {
-    const auto range = std::equal_range(directed.begin(), directed.end(), key);
-    return static_cast<int64_t>(range.second - range.first);
-  };
-  int64_t edges = 0;
-  for (size_t i = 0; i < directed.size();) {
-    size_t j = i;
-    while (j < directed.size() && directed[j] == directed[i]) ++j;
-    const auto a = static_cast<int32_t>(directed[i] >> 32), b = static_cast<int32_t>(directed[i] & 0xffffffffu);
-    const int64_t forward = static_cast<int64_t>(j - i), backward = a == b ? 0 : count_directed(directed_edge_key(b, a));
-    // Each undirected edge is counted once, from its smaller-first direction or, when only the
-    // larger-first direction exists, from that one.
-    if (a < b || backward == 0) {
-      ++edges;
-      const int64_t uses = forward + backward;
-      if (uses == 1) ++r.boundary_edges;
-      else if (uses > 2) ++r.nonmanifold_edges;
-      else if (forward != 1 || backward != 1) ++r.misoriented_edges;
+    for (int k = 0; k < 3; ++k) {
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      halves.push_back(undirected_edge_key(a, b) << 1 | (a > b ? 1u : 0u));
     }
+  }
+  std::sort(halves.begin(), halves.end());
+  int64_t edges = 0;
+  for (size_t i = 0; i < halves.size();) {
+    size_t j = i;
+    int64_t backward = 0;  // traversals y -> x
+    for (; j < halves.size() && halves[j] >> 1 == halves[i] >> 1; ++j) backward += static_cast<int64_t>(halves[j] & 1u);
+    const int64_t uses = static_cast<int64_t>(j - i), forward = uses - backward;
+    ++edges;
+    if (uses == 1) ++r.boundary_edges;
+    else if (uses > 2) ++r.nonmanifold_edges;
+    else if (forward != 1 || backward != 1) ++r.misoriented_edges;
     i = j;
   }
   // Fans: faces around a vertex joined when they share an edge at that vertex.
@@ -290,12 +286,13 @@ SurfaceReport inspect_surface(const TriMesh& mesh) {
   for (size_t f = 0; f < mesh.num_faces(); ++f)
     for (int32_t v : mesh.triangles[f]) around[fill[v]++] = static_cast<int32_t>(f);
   int64_t used = 0;
+  DisjointSets fan(0);
   for (size_t v = 0; v < V; ++v) {
     const int32_t n = first[v + 1] - first[v];
     if (n == 0) continue;
     ++used;
     const int32_t* fs = &around[first[v]];
-    DisjointSets fan(static_cast<size_t>(n));
+    fan.reset(static_cast<size_t>(n));
     for (int32_t i = 0; i < n; ++i)
       for (int32_t j = i + 1; j < n; ++j) {
         int shared = 0;
