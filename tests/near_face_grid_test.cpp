@@ -136,6 +136,51 @@ TEST(NearFaceGrid, ShortListsAndCoarsenedVoxelsStayValid) {
   check_against_brute_force(mesh, grid, rng, 1500, 0.1);
 }
 
+// A crowded voxel (more faces within its list radius than a list holds) lists the faces nearest
+// its centre, and its reach comes from the next nearest face: lists short enough to be cut many
+// times over while the build searches, against distances from the centre to every face.
+TEST(NearFaceGrid, CrowdedVoxelsListTheNearestFacesAndReachTheNextOne) {
+  std::mt19937 rng(9);
+  const TriMesh mesh = random_soup(rng, 400);
+  const int max_list = 6;
+  const double list_margin = 0.8;
+  const double far = 1.0;
+  const NearFaceGrid grid = build_near_face_grid(mesh, 0.1, 0.3, list_margin, far, max_list);
+  const double half_diagonal = 0.5 * std::sqrt(3.0) * grid.voxel;
+  const int64_t voxels = static_cast<int64_t>(grid.size.x) * grid.size.y * grid.size.z;
+  int crowded = 0;
+  for (int64_t v = 0; v < voxels; v += 7) {
+    const int64_t i = v % grid.size.x, j = (v / grid.size.x) % grid.size.y, k = v / (int64_t{grid.size.x} * grid.size.y);
+    const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * grid.voxel;
+    std::vector<double> distance(mesh.num_faces());
+    for (size_t f = 0; f < mesh.num_faces(); ++f) {
+      const Tri& t = mesh.triangles[f];
+      distance[f] = reference_distance(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    }
+    std::vector<double> sorted = distance;
+    std::sort(sorted.begin(), sorted.end());
+    // Near enough to list (blocks of 2 x 2 x 2 voxels past `far` list none), and more faces
+    // than a list holds within the list radius: the nearest face's distance, the voxel's
+    // diagonal and the margin.
+    if (sorted[0] > far - 2.0 * half_diagonal) continue;
+    if (!(sorted[max_list] < sorted[0] + 2.0 * half_diagonal + list_margin - 1e-6)) continue;
+    ++crowded;
+    ASSERT_EQ(grid.start[v + 1] - grid.start[v], static_cast<uint32_t>(max_list)) << "voxel " << v;
+    const std::set<uint32_t> listed(grid.faces.begin() + grid.start[v], grid.faces.begin() + grid.start[v + 1]);
+    double farthest_listed = 0.0, nearest_unlisted = std::numeric_limits<double>::infinity();
+    for (size_t f = 0; f < mesh.num_faces(); ++f) {
+      if (listed.count(static_cast<uint32_t>(f))) farthest_listed = std::max(farthest_listed, distance[f]);
+      else nearest_unlisted = std::min(nearest_unlisted, distance[f]);
+    }
+    ASSERT_LE(farthest_listed, nearest_unlisted + 1e-12) << "voxel " << v;
+    // Less the half diagonal and the walls' padding (about 2e-6 voxels), no more.
+    const double expected = std::max(nearest_unlisted - half_diagonal, 0.0);
+    ASSERT_LE(grid.reach[v], expected + 1e-12) << "voxel " << v;
+    ASSERT_GE(grid.reach[v], expected - 1e-5 * grid.voxel) << "voxel " << v;
+  }
+  EXPECT_GT(crowded, 500);
+}
+
 // Between widely spaced elements (fruit) most voxels list nothing; their reach is the nearest
 // face's distance less the voxel's half diagonal, a bound that stays close to the truth there
 // rather than stopping at `far`.

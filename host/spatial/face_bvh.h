@@ -10,16 +10,9 @@
 #include <vector>
 
 #include "mesh/tri_mesh.h"
+#include "spatial/closest_point.h"
 
 namespace meshquilt {
-
-//! A face and the closest point on it to a query point (double precision).
-struct ClosestPoint {
-  int32_t face = -1;      //!< -1: nothing within the search radius
-  Vec3 point{0.0};        //!< closest point on `face`
-  Vec3 barycentric{0.0};  //!< of `point` with respect to the face's three vertices
-  double distance = std::numeric_limits<double>::infinity();
-};
 
 //! The face a ray meets first and where along the ray.
 struct RayHit {
@@ -31,9 +24,6 @@ struct RayHit {
 //! (Moller-Trumbore in double; points on an edge count as inside, a ray in the triangle's plane
 //! misses). Returns t, or +infinity on a miss.
 double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b, const Vec3& c);
-
-//! Closest point on triangle (a, b, c) to p, exact in double (Ericson's region test).
-ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 //! Embree build quality: `low` builds fastest (one-shot pair searches), `medium` gives faster
 //! point queries (many queries against one BVH).

@@ -174,26 +174,45 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     const double list_radius = nearest + 2.0 * radius + list_margin;
     // Faces not gathered are farther than R - offset from the centre.
     double unlisted = reach_limit - offset;
+    // What a voxel needs is its nearest max_list + 1 faces within list_radius: the listed ones
+    // and the nearest of the rest. Whenever twice that many are found, the farther half is
+    // dropped (none is nearer than the kept ones, so `unlisted` loses nothing), and the farthest
+    // kept face's distance bounds what can still enter: a face whose gap (a lower bound of its
+    // distance) passes it is skipped.
+    const size_t keep = static_cast<size_t>(max_list) + 1;
+    const auto nearer = [](const std::pair<double, uint32_t>& x, const std::pair<double, uint32_t>& y) {
+      return x.first < y.first || (x.first == y.first && x.second < y.second);
+    };
+    double bound = list_radius;
     s.found.clear();
     for (size_t m = 0; m < s.candidates.size(); ++m) {
       const Candidate& cand = s.candidates[m];
-      if (cand.gap - offset > list_radius + slack) {
+      if (cand.gap - offset > bound + slack) {
         unlisted = std::min(unlisted, cand.gap - offset);  // the nearest of the rest
         break;
       }
       const double gap = m < seen ? s.gaps[m] : gap_here(cand.face);
-      if (gap > list_radius) {
+      if (gap > bound) {
         unlisted = std::min(unlisted, gap);
         continue;
       }
       const double d = m < seen && s.distances[m] >= 0.0 ? s.distances[m] : distance(cand.face);
-      if (d <= list_radius)
-        s.found.emplace_back(d, cand.face);
-      else
+      if (d > bound) {
         unlisted = std::min(unlisted, d);
+        continue;
+      }
+      s.found.emplace_back(d, cand.face);
+      if (s.found.size() == 2 * keep) {
+        const auto farthest_kept = s.found.begin() + static_cast<std::ptrdiff_t>(keep - 1);
+        std::nth_element(s.found.begin(), farthest_kept, s.found.end(), nearer);
+        s.found.resize(keep);
+        bound = farthest_kept->first;
+      }
     }
     const size_t listed = std::min(s.found.size(), static_cast<size_t>(max_list));
-    std::partial_sort(s.found.begin(), s.found.begin() + static_cast<std::ptrdiff_t>(listed), s.found.end());
+    const auto end_listed = s.found.begin() + static_cast<std::ptrdiff_t>(listed);
+    if (listed < s.found.size()) std::nth_element(s.found.begin(), end_listed, s.found.end(), nearer);
+    std::sort(s.found.begin(), end_listed, nearer);
     for (size_t m = listed; m < s.found.size(); ++m) unlisted = std::min(unlisted, s.found[m].first);
     grid.reach[v] = std::clamp(unlisted - radius, 0.0, std::numeric_limits<double>::max());
     out.counts.push_back(static_cast<uint32_t>(listed));
