@@ -230,6 +230,30 @@ TEST(FaceBvh, ExactFarFromTheOriginAndFromManyThreads) {
   for (size_t i = 0; i < points.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-9) << i;
 }
 
+// Six coplanar faces around a vertex, a point straight above it: every face is as near and
+// faces the same way, so every cost ties, and the lowest index wins, also against a known face.
+TEST(FaceBvh, MinCostTiesGoToTheLowestIndex) {
+  TriMesh fan;
+  fan.positions.emplace_back(0.0, 0.0, 0.0);
+  for (int k = 0; k < 6; ++k) fan.positions.emplace_back(std::cos(k * M_PI / 3.0), std::sin(k * M_PI / 3.0), 0.0);
+  for (int k = 0; k < 6; ++k) fan.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+  // Listed in reverse, so that the lowest index is not the first face built.
+  std::reverse(fan.triangles.begin(), fan.triangles.end());
+  const FaceBvh bvh(fan);
+  const Vec3 p(0.0, 0.0, 0.5);
+  const auto cost = [](const ClosestPoint& c) { return 1.0 + c.distance; };
+  const auto radius = [](double c) { return c - 1.0; };
+  double best = 0.0;
+  EXPECT_EQ(bvh.min_cost_face(p, cost, radius, &best).face, 0);
+  EXPECT_EQ(best, 1.5);
+  // Known to cost 1.5 at face 3: face 0 ties it with a lower index.
+  EXPECT_EQ(bvh.min_cost_face(p, cost, radius, &best, 1.5, {}, 3).face, 0);
+  // Known at face 0, or at some face: nothing beats it.
+  EXPECT_EQ(bvh.min_cost_face(p, cost, radius, &best, 1.5, {}, 0).face, -1);
+  EXPECT_EQ(bvh.min_cost_face(p, cost, radius, &best, 1.5).face, -1);
+  EXPECT_EQ(best, 1.5);
+}
+
 TEST(FaceBvh, EmptyMeshFindsNothing) {
   const TriMesh empty;
   const FaceBvh bvh(empty);

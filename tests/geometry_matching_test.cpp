@@ -1,6 +1,6 @@
-// Geometry matching (Section 2.4, Eq. 1-3): the host's exact cost against a brute force written
-// here, recovery of a known placement, the pruned search against the full one, and the same
-// choice on both back ends.
+// Geometry matching (Section 2.4, Eq. 1-3): the host's exact cost and its faces against a brute
+// force written here, recovery of a known placement, the pruned search against the full one,
+// and the same choice on both back ends.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "error.h"
 #include "mesh/measures.h"
 #include "quilt/geometry_matching.h"
+#include "spatial/closest_point.h"
 #include "swatch/chainmail.h"
 
 namespace meshquilt {
@@ -82,6 +83,106 @@ TEST(GeometryMatching, ExactCostIsEquation3) {
   }
   for (const glm::dvec2 t : {glm::dvec2(0.0), glm::dvec2(0.7, -0.3), glm::dvec2(-1.5, 2.0)})
     EXPECT_NEAR(matcher.exact_cost(points, normals, t), brute_force_cost(swatch, points, normals, t, 2.5), 1e-9);
+}
+
+// A flat grid of triangles (exact coordinates: points on its vertices and edges, above them and
+// beyond its border are equally near several faces of one normal, so costs tie exactly) beside
+// scattered tetrahedra. Per point, the exact cost's face is the lowest index among the faces of
+// least cost, found here by trying every face, whatever faces are given to try first.
+TEST(GeometryMatching, ExactFacesAreTheLowestIndexOfTheLeastCostWhateverTheHints) {
+  std::mt19937_64 rng(23);
+  TriMesh swatch = random_swatch(rng, 20);
+  const int n = 12;
+  const auto base = static_cast<int32_t>(swatch.positions.size());
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) swatch.positions.emplace_back(1.0 + 0.25 * i, 1.0 + 0.25 * j, 0.5);
+  const auto at = [&](int i, int j) { return base + j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      swatch.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      swatch.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  // And a tilted grid with inexact coordinates: its faces' normals differ in the last places,
+  // so points on its vertices and edges are near ties that rounding decides.
+  const int m = 8;
+  const auto tilted = static_cast<int32_t>(swatch.positions.size());
+  const Vec3 origin(5.0, 4.0, 0.2), e1(0.23, 0.031, 0.071), e2(-0.027, 0.21, 0.053);
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i) swatch.positions.push_back(origin + double(i) * e1 + double(j) * e2);
+  const auto on_tilted = [&](int i, int j) { return tilted + j * (m + 1) + i; };
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      swatch.triangles.push_back({on_tilted(i, j), on_tilted(i + 1, j), on_tilted(i + 1, j + 1)});
+      swatch.triangles.push_back({on_tilted(i, j), on_tilted(i + 1, j + 1), on_tilted(i, j + 1)});
+    }
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  MatchingOptions options;
+  options.lambda = 4.0;
+  const GeometryMatcher matcher(*device, swatch, 0.5, options);
+
+  std::vector<Vec3> points, normals;
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int j = -2; j <= 2 * n + 2; ++j)
+    for (int i = -2; i <= 2 * n + 2; ++i) {
+      const double lift = (i + j) % 3 == 0 ? 0.0 : ((i + j) % 3 == 1 ? 0.25 : -0.5);
+      points.emplace_back(1.0 + 0.125 * i, 1.0 + 0.125 * j, 0.5 + lift);
+      normals.push_back((i * j) % 2 == 0 ? Vec3(0.0, 0.0, 1.0) : glm::normalize(Vec3(u(rng), u(rng), u(rng))));
+    }
+  for (int k = 0; k < 300; ++k) {
+    points.emplace_back(4.0 + 4.0 * u(rng), 3.0 + 3.0 * u(rng), 0.3 * u(rng));
+    normals.push_back(glm::normalize(Vec3(u(rng), u(rng), u(rng))));
+  }
+  // On the tetrahedra and the tilted grid, at distances of rounding errors, where a bound that
+  // rounding lifts above the computed distance passes over the least cost.
+  const Vec3 tilted_normal = glm::normalize(glm::cross(e1, e2));
+  for (size_t f = 0; f < swatch.num_faces(); ++f) {
+    if (f >= 80 && static_cast<int32_t>(swatch.triangles[f][0]) < tilted) continue;  // the exact grid
+    const Tri& tri = swatch.triangles[f];
+    const Vec3 &a = swatch.positions[tri[0]], &b = swatch.positions[tri[1]], &c = swatch.positions[tri[2]];
+    const Vec3 face_normal = f < 80 ? glm::normalize(glm::cross(b - a, c - a)) : tilted_normal;
+    for (const Vec3& q : {(a + b + c) / 3.0, 0.3 * a + 0.7 * b, a, 0.5 * (a + c)}) {
+      points.push_back(q);
+      normals.push_back(face_normal);
+    }
+  }
+
+  for (const glm::dvec2 t : {glm::dvec2(0.0), glm::dvec2(0.25, -0.125)}) {
+    std::vector<int32_t> expected(points.size(), -1);
+    double expected_total = 0.0;
+    int tied = 0;
+    for (size_t p = 0; p < points.size(); ++p) {
+      const Vec3 q = points[p] - Vec3(t, 0.0);
+      double best = std::numeric_limits<double>::infinity();
+      int ties = 0;
+      for (size_t f = 0; f < swatch.num_faces(); ++f) {
+        const Tri& tri = swatch.triangles[f];
+        const Vec3 &a = swatch.positions[tri[0]], &b = swatch.positions[tri[1]], &c = swatch.positions[tri[2]];
+        const Vec3 cross = glm::cross(b - a, c - a);
+        const Vec3 face_normal = cross / glm::length(cross);
+        const double cost = (1.0 + options.lambda * closest_point_on_triangle(q, a, b, c).distance) *
+                            (1.0 + glm::length(normals[p] - face_normal));
+        if (cost < best) {
+          best = cost;
+          expected[p] = static_cast<int32_t>(f);
+          ties = 0;
+        } else if (cost == best) {
+          ++ties;
+        }
+      }
+      expected_total += best;
+      tied += ties > 0;
+    }
+    ASSERT_GT(tied, 100) << "too few exact ties for the test to mean anything";
+    std::vector<int32_t> fresh(points.size(), -1), hinted(points.size());
+    std::uniform_int_distribution<int32_t> any_face(0, static_cast<int32_t>(swatch.num_faces()) - 1);
+    for (int32_t& h : hinted) h = any_face(rng);
+    EXPECT_EQ(matcher.exact_cost(points, normals, t, fresh), expected_total);
+    EXPECT_EQ(matcher.exact_cost(points, normals, t, hinted), expected_total);
+    for (size_t p = 0; p < points.size(); ++p) {
+      ASSERT_EQ(fresh[p], expected[p]) << "point " << p;
+      ASSERT_EQ(hinted[p], expected[p]) << "point " << p << " (hinted)";
+    }
+  }
 }
 
 // Output points copied from the swatch moved by a known translation: the match finds it.

@@ -45,18 +45,27 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
     }
     face_planar_.push_back(len > 1e-6 * longest2);
   }
+  double largest = 0.0;
+  for (const Vec3& p : swatch.positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  rounding_ = 1e-12 * largest;
   bvh_ = std::make_unique<FaceBvh>(swatch_);
-  // Voxels of 3/4 of a mean edge (coarser past 2^18 voxels) listing the faces within 1.5 mean
-  // edges past the voxel's diagonal: with the drivers' lambda = 1 / mean edge, the cap
-  // 1 + lambda * reach then exceeds what most points cost even where the normals disagree, so
-  // the bound equals Eq. 2 for most pairs and the host rarely needs the BVH. Shorter lists
-  // (1 mean edge, or 64 faces) made the default jobs twice as slow. Lists are grouped by normal
-  // (below), so a long list costs little to scan: up to 1,024 faces on a small swatch, whose
-  // interlocking rings crowd hundreds into a voxel's reach (the default job: BVH fallbacks of
-  // exact costs 62 K -> 10 K against 256, for 6 MB), 128 past 8,192 faces, where 256 added a
-  // quarter to peak memory for no time saved. A point 3 mean edges from the swatch costs at
-  // least 4 whatever its normal; its voxel lists nothing.
+  // Voxels of 3/4 of a mean edge (1 past 8,192 faces; coarser past 2^18 voxels) listing the faces
+  // within 1.5 mean edges past the voxel's diagonal: with the drivers' lambda = 1 / mean edge,
+  // the cap 1 + lambda * reach then exceeds what most points cost even where the normals
+  // disagree, so the bound equals Eq. 2 for most pairs and the host rarely needs the BVH. Shorter
+  // lists (1 mean edge, or 64 faces) made the default jobs twice as slow. Lists are grouped by
+  // normal (below), so a long list costs little to scan: up to 1,024 faces on a small swatch,
+  // whose interlocking rings crowd hundreds into a voxel's reach (the default job: BVH fallbacks
+  // of exact costs 62 K -> 10 K against 256, for 6 MB), 128 past 8,192 faces, where 256 added a
+  // quarter to peak memory for no time saved. A point 3 mean edges from the swatch costs at least
+  // 4 whatever its normal; its voxel lists nothing. The voxel's size changes how fast the answers
+  // come, never the answers (exact costs and their faces, ties to the lower index). Past 8,192
+  // faces, voxels of 1 mean edge instead of 3/4 build the grid in about half the time (the Wire
+  // row 3.0 -> 2.2 s, most of it the grid) and match no slower (the 4x4 default chain mail
+  // 13.7-15.8 -> 12.9-14.4 s, twill about the same); 1.25 slowed the chain mail's matching by a
+  // quarter (shorter reach, more BVH searches).
   const double mean_edge = mean_edge_;
+  const double voxel = (swatch.num_faces() <= 8192 ? 0.75 : 1.0) * mean_edge;
   const int max_list = swatch.num_faces() <= 8192 ? 1024 : 128;
   // Each voxel's list grouped by the faces' normal directions (an octahedral grid): most points
   // face away from most groups, which a scan then passes over whole. Built-in chain mail over
@@ -64,7 +73,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   // 4.3 G). Past 8,192 faces 3 x 3: the lists are short there, and 6 x 6 took the Wire row's
   // peak memory from 455 to 542 MB in small groups (3 x 3: 465 MB, and fewer instructions).
   normal_bins_ = bin_normals(face_normals_, swatch.num_faces() <= 8192 ? 6 : 3);
-  grid_ = build_near_face_grid(swatch, 0.75 * mean_edge, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
+  grid_ = build_near_face_grid(swatch, voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
                                int64_t{1} << 18, normal_bins_.bin_of);
 
   MatchingSwatch device_swatch;
@@ -92,14 +101,16 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     return closest_point_on_triangle(q, swatch_.positions[t[0]], swatch_.positions[t[1]], swatch_.positions[t[2]]).distance;
   };
   // The distance is at least that to the face's bounding sphere and (for a face with a
-  // well-defined plane) to its plane.
+  // well-defined plane) to its plane, less what rounding can take from either: a bound above
+  // the distance as computed, even by one unit in the last place, can pass over the nearest face.
+  const double rounding = rounding_ + 1e-12 * std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
   const auto gap_to = [&](int32_t f) {
-    double gap = std::max(glm::length(q - face_spheres_[f].centre) - face_spheres_[f].radius, 0.0);
+    double gap = glm::length(q - face_spheres_[f].centre) - face_spheres_[f].radius;
     if (face_planar_[f]) {
       const Vec3& a = swatch_.positions[swatch_.triangles[f][0]];
       gap = std::max(gap, std::abs(glm::dot(q - a, face_normals_[f])) * (1.0 - 1e-12));
     }
-    return gap;
+    return std::max(gap - rounding, 0.0);
   };
   const auto face_bound = [&](int32_t f) {
     return (1.0 + lambda * gap_to(f)) * (1.0 + glm::length(normal - face_normals_[f]));
@@ -110,18 +121,20 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   const int64_t voxel = grid_.voxel_of(q);
   if (voxel >= 0) {
     // A group's faces all cost at least (1 + lambda * near) x its normal bound, and entries come
-    // nearest first: once one cannot beat the best, none after it in the group can.
+    // nearest first: once one cannot beat or tie the best, none after it in the group can. Ties
+    // go to the lower face index, as in the BVH's search, so that the face found (a hint, and
+    // the refinement's correspondence) does not depend on the order of the scan or the hint.
     const auto scan = [&](uint32_t g) {
       const double factor = factors[grid_.group_label[g]];
       for (uint32_t k = grid_.group_first[g]; k < grid_.group_first[g + 1]; ++k) {
         const double nearest = 1.0 + lambda * grid_.near[k];
-        if (nearest * factor >= best) break;
+        if (nearest * factor > best) break;
         const auto f = static_cast<int32_t>(grid_.faces[k]);
         const double turn = 1.0 + glm::length(normal - face_normals_[f]);
-        if (nearest * turn >= best) continue;  // nor can this face, facing away
-        if ((1.0 + lambda * gap_to(f)) * turn >= best) continue;  // or far off
+        if (nearest * turn > best) continue;  // nor can this face, facing away
+        if ((1.0 + lambda * gap_to(f)) * turn > best) continue;  // or far off
         const double c = (1.0 + lambda * distance_to(f)) * turn;
-        if (c < best) {
+        if (c < best || (c == best && f < face)) {
           best = c;
           face = f;
         }
@@ -141,16 +154,16 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
       }
     if (lowest < end) scan(lowest);
     for (uint32_t g = first; g < end; ++g)
-      if (g != lowest && group_bound(g) < best) scan(g);
+      if (g != lowest && group_bound(g) <= best) scan(g);
     // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
-    if (best <= 1.0 + lambda * grid_.reach[voxel]) return best;
+    if (best < 1.0 + lambda * grid_.reach[voxel]) return best;
   }
   // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win; within that,
   // a face's normal term and its bounding sphere rule most out without a closest point (far
   // from the swatch, the normal term widens the search to many faces facing away).
   const ClosestPoint found = bvh_->min_cost_face(
       q, [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); },
-      [&](double d) { return (d - 1.0) / lambda; }, &best, best, face_bound);
+      [&](double d) { return (d - 1.0) / lambda; }, &best, best, face_bound, face);
   if (found.face >= 0) face = found.face;
   return best;
 }
@@ -164,6 +177,11 @@ std::vector<double> GeometryMatcher::normal_factors(const std::vector<Vec3>& nor
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const glm::dvec2& translation) const {
   std::vector<int32_t> faces(points.size(), -1);
+  return exact_cost(points, normals, translation, faces);
+}
+
+double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                   const glm::dvec2& translation, std::vector<int32_t>& faces) const {
   return exact_cost(points, normals, normal_factors(normals), translation, faces);
 }
 

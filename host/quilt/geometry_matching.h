@@ -69,11 +69,14 @@ class GeometryMatcher {
   //! Eq. 3 in double precision: sum over points of min over swatch faces of Eq. 1.
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                     const glm::dvec2& translation) const;
+  //! Eq. 3, and per point the face that minimizes Eq. 1, the lowest index among faces of equal
+  //! cost: `faces` (#P, -1 for none) holds faces to try first and receives the minimizing ones.
+  //! Neither the cost nor the faces depend on the hints (or on how the search is accelerated).
+  double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                    const glm::dvec2& translation, std::vector<int32_t>& faces) const;
 
  private:
-  //! Eq. 3 with a warm start per point: `faces` (#P, -1 for none) holds faces to try first and
-  //! receives the minimizing faces. The result does not depend on the hints.
-  //! `factors` are normal_factors(normals).
+  //! The public exact_cost with `faces`, given `factors` = normal_factors(normals).
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                     const std::vector<double>& factors, const glm::dvec2& translation,
                     std::vector<int32_t>& faces) const;
@@ -92,6 +95,10 @@ class GeometryMatcher {
   MatchingOptions options_;
   double cell_size_;
   double mean_edge_;  //!< of the swatch's edges
+  //! Absolute allowance for rounding in distances: the largest coordinate of the swatch x 1e-12
+  //! (a plane distance and a closest point's distance may each be off by a few units in the last
+  //! place of the coordinates, which near a face is not small relative to the distance).
+  double rounding_;
   std::vector<Vec3> face_normals_;
   std::vector<FaceSphere> face_spheres_;  //!< a quick lower bound of Dist
   std::vector<uint8_t> face_planar_;  //!< whether the face's plane distance is a lower bound of Dist too

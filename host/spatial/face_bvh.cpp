@@ -279,7 +279,7 @@ ClosestPoint FaceBvh::closest_point(const Vec3& p, double max_distance) const {
 ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(const ClosestPoint&)>& cost,
                                     const std::function<double(double best_cost)>& radius_for,
                                     double* best_cost, double known_cost,
-                                    const std::function<double(int32_t)>& face_bound) const {
+                                    const std::function<double(int32_t)>& face_bound, int32_t known_face) const {
   QueryState q;
   q.mesh = &mesh_;
   q.p = p;
@@ -287,6 +287,7 @@ ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(co
   q.radius_for = &radius_for;
   q.face_bound = &face_bound;
   q.best_cost = known_cost;
+  q.best.face = known_face;  // a tie goes to a lower index only
   q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
   if (mesh_.num_faces() > 0) {
     RTCPointQuery query;
@@ -301,6 +302,7 @@ ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(co
     impl_->check("point query");
   }
   if (best_cost) *best_cost = q.best_cost;
+  if (q.best.face == known_face) return ClosestPoint{};  // nothing beat the known face
   return q.best;
 }
 

@@ -50,16 +50,19 @@ class FaceBvh {
   //! distance beyond which no face can beat best_cost (e.g. (D - 1) / lambda for Eq. 1), so the
   //! search radius shrinks as better faces are found; the answer is exact. `best_cost` receives
   //! the minimum (infinity when the mesh is empty).
-  //! `known_cost`, when finite, is a cost some face is known to reach: the search then starts
-  //! at radius_for(known_cost), and when no face costs less the answer has face -1 and
-  //! `best_cost` = known_cost. `face_bound`, when given, is a cheap lower bound of a face's cost
-  //! (without its closest point): a face whose bound exceeds the best so far is passed over.
+  //! Among faces of equal cost the lowest index wins. `known_cost`, when finite, is a cost
+  //! face `known_face` (or some face, when -1) is known to reach: the search then starts at
+  //! radius_for(known_cost), and when no face beats it (costs less, or as much with a lower
+  //! index than `known_face`) the answer has face -1 and `best_cost` = known_cost. `face_bound`,
+  //! when given, is a cheap lower bound of a face's cost (without its closest point): a face
+  //! whose bound exceeds the best so far is passed over.
   ClosestPoint min_cost_face(const Vec3& p,
                              const std::function<double(const ClosestPoint&)>& cost,
                              const std::function<double(double best_cost)>& radius_for,
                              double* best_cost,
                              double known_cost = std::numeric_limits<double>::infinity(),
-                             const std::function<double(int32_t face)>& face_bound = {}) const;
+                             const std::function<double(int32_t face)>& face_bound = {},
+                             int32_t known_face = -1) const;
 
   //! The first face met by the ray origin + t * direction, 0 < t <= max_distance, both sides of a
   //! face counting; `distance` is t (the Euclidean distance when direction has unit length).
