@@ -181,6 +181,37 @@ TEST(NearFaceGrid, CrowdedVoxelsListTheNearestFacesAndReachTheNextOne) {
   EXPECT_GT(crowded, 500);
 }
 
+// Over a flat sheet a voxel's entries are bounded by its box's gap from the sheet's plane
+// (the height of its face nearest the sheet) at least, tighter than the centre's distance less
+// the half diagonal.
+TEST(NearFaceGrid, EntriesOverASheetAreBoundedByThePlane) {
+  TriMesh sheet;
+  const int n = 20;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) sheet.positions.emplace_back(0.1 * i, 0.1 * j, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int32_t a = j * (n + 1) + i;
+      sheet.triangles.push_back({a, a + 1, a + n + 2});
+      sheet.triangles.push_back({a, a + n + 2, a + n + 1});
+    }
+  const NearFaceGrid grid = build_near_face_grid(sheet, 0.1, 0.5, 0.2, 1.0, 64);
+  const double half_diagonal = 0.5 * std::sqrt(3.0) * grid.voxel;
+  int checked = 0;
+  for (int k = 0; k < grid.size.z; ++k) {
+    const int64_t v = (static_cast<int64_t>(k) * grid.size.y + grid.size.y / 2) * grid.size.x + grid.size.x / 2;
+    const Vec3 centre = grid.origin + (Vec3(grid.size.x / 2, grid.size.y / 2, k) + 0.5) * grid.voxel;
+    const double lower_face = std::min(std::abs(centre.z - 0.5 * grid.voxel), std::abs(centre.z + 0.5 * grid.voxel));
+    if (centre.z - 0.5 * grid.voxel <= 0.0 && centre.z + 0.5 * grid.voxel >= 0.0) continue;  // the sheet crosses it
+    for (uint32_t e = grid.start[v]; e < grid.start[v + 1]; ++e) {
+      ++checked;
+      EXPECT_GE(grid.near[e], lower_face - 1e-5) << "voxel layer " << k;
+      EXPECT_GT(grid.near[e], std::abs(centre.z) - half_diagonal + 0.01);
+    }
+  }
+  EXPECT_GT(checked, 50);
+}
+
 // Between widely spaced elements (fruit) most voxels list nothing; their reach is the nearest
 // face's distance less the voxel's half diagonal, a bound that stays close to the truth there
 // rather than stopping at `far`.

@@ -81,6 +81,25 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   }
 
   const std::vector<FaceSphere> spheres = face_spheres(mesh);
+  // Per face its box, and its unit normal where the face is not a sliver (a sliver's normal is
+  // too uncertain for its plane to bound distances): the bounds of listed entries below.
+  struct FaceShape {
+    Vec3 low, high, normal{0.0};
+    bool planar = false;
+  };
+  std::vector<FaceShape> shapes(mesh.num_faces());
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    FaceShape& shape = shapes[f];
+    shape.low = glm::min(glm::min(a, b), c);
+    shape.high = glm::max(glm::max(a, b), c);
+    const Vec3 cross = glm::cross(b - a, c - a);
+    const double longest2 = std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+    const double length = glm::length(cross);
+    shape.planar = length > 1e-6 * longest2;
+    if (shape.planar) shape.normal = cross / length;
+  }
   const FaceBvh bvh(mesh);
   // Every point within pad of a voxel lies within `radius` of its centre.
   const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * pad;
@@ -212,9 +231,23 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     const size_t listed = std::min(s.found.size(), static_cast<size_t>(max_list));
     const auto end_listed = s.found.begin() + static_cast<std::ptrdiff_t>(listed);
     if (listed < s.found.size()) std::nth_element(s.found.begin(), end_listed, s.found.end(), nearer);
-    std::sort(s.found.begin(), end_listed, nearer);
     for (size_t m = listed; m < s.found.size(); ++m) unlisted = std::min(unlisted, s.found[m].first);
     grid.reach[v] = std::clamp(unlisted - radius, 0.0, std::numeric_limits<double>::max());
+    // Each listed face's entry: no point within pad of the voxel is nearer to it than its
+    // distance from the centre less `radius`, than the gap between the voxel's box and the face's
+    // box, or than the voxel's box's gap from the face's plane; each less pad again for rounding.
+    const Vec3 half(0.5 * voxel + pad), low = centre - half, high = centre + half;
+    for (auto it = s.found.begin(); it != end_listed; ++it) {
+      const FaceShape& shape = shapes[it->second];
+      double near = it->first - radius;
+      near = std::max(near, glm::length(glm::max(glm::max(shape.low - high, low - shape.high), Vec3(0.0))) - pad);
+      if (shape.planar) {
+        const Vec3& a = mesh.positions[mesh.triangles[it->second][0]];
+        near = std::max(near, std::abs(glm::dot(centre - a, shape.normal)) - glm::dot(half, glm::abs(shape.normal)) - pad);
+      }
+      it->first = std::max(near, 0.0);
+    }
+    std::sort(s.found.begin(), end_listed, nearer);
     out.counts.push_back(static_cast<uint32_t>(listed));
     // Groups by label (a counting sort, which keeps each group nearest first).
     s.label_count.assign(labels, 0);
@@ -234,7 +267,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     out.faces.resize(base + listed);
     out.near.resize(base + listed);
     for (size_t m = 0; m < listed; ++m) {
-      const double near = std::max(s.found[m].first - radius, 0.0);
+      const double near = s.found[m].first;
       float rounded = static_cast<float>(near);
       if (static_cast<double>(rounded) > near) rounded = std::nextafter(rounded, 0.0f);
       const size_t at = base + s.label_count[label(s.found[m].second)]++;
