@@ -143,13 +143,20 @@ void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
                       static_cast<const MatchingGroup*>(dispatch.bindings[MATCHING_COST_BINDING_GROUPS]), params};
   const auto* factors = static_cast<const float*>(dispatch.bindings[MATCHING_COST_BINDING_FACTORS]);
   const uint point_count = params.point_count;
+  const uint first = dispatch.first;
   const uint end = std::min(dispatch.first + dispatch.count, params.invocation_count);
-  for (uint id = dispatch.first; id < end; ++id) {
-    const uint c = id / point_count;
-    const uint i = id - c * point_count;
+  if (first >= end) return;
+  // Point by point across the chunk's candidates (neighbours on the candidate grid), whose
+  // queries fall in neighbouring voxels: a tenth faster than candidate by candidate.
+  const uint first_candidate = first / point_count, last_candidate = (end - 1) / point_count;
+  for (uint i = 0; i < point_count; ++i) {
     const MatchingPoint& p = points[i];
-    costs[id] = point_bound(swatch, vec3(p.position) - vec3(translations[c], 0.0f), vec3(p.normal),
-                           factors + static_cast<std::size_t>(i) * params.bin_count);
+    const float* point_factors = factors + static_cast<std::size_t>(i) * params.bin_count;
+    for (uint c = first_candidate; c <= last_candidate; ++c) {
+      const uint id = c * point_count + i;
+      if (id >= first && id < end)
+        costs[id] = point_bound(swatch, vec3(p.position) - vec3(translations[c], 0.0f), vec3(p.normal), point_factors);
+    }
   }
 }
 
