@@ -221,7 +221,8 @@ void expect_interrupt(int signal_number, const char* name) {
   const auto dir = scratch_dir(name);
   write_file(dir / "out.ply", "previous good output");
   write_file(dir / "stats.json", "previous stats");
-  const pid_t pid = spawn_cli({"synth", "--progress", "none", "--plane", "3x3", "--backend", "cpu", "--stats",
+  // A job of tens of seconds, so that the signal lands mid-run on the fastest machine.
+  const pid_t pid = spawn_cli({"synth", "--progress", "none", "--plane", "10x10", "--backend", "cpu", "--stats",
                                (dir / "stats.json").string(), "-o", (dir / "out.ply").string()},
                               (dir / "log.txt").string());
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
