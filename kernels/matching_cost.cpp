@@ -237,6 +237,21 @@ std::vector<float> MatchingCost::point_costs(const std::vector<glm::vec3>& point
 std::vector<double> MatchingCost::score(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
                                         const std::vector<glm::vec2>& translations,
                                         const std::vector<double>& factors) {
+  const std::vector<double> pairs = pair_bounds(points, normals, translations, factors);
+  std::vector<double> sums(translations.size(), 0.0);
+  const std::size_t point_count = points.size();
+  for (std::size_t c = 0; c < sums.size(); ++c) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < point_count; ++i) sum += pairs[c * point_count + i];
+    sums[c] = sum;
+  }
+  return sums;
+}
+
+std::vector<double> MatchingCost::pair_bounds(const std::vector<glm::vec3>& points,
+                                              const std::vector<glm::vec3>& normals,
+                                              const std::vector<glm::vec2>& translations,
+                                              const std::vector<double>& factors) {
   const std::vector<float> costs = point_costs(points, normals, translations, factors);
   // Float32 moves a query by a few ulps of the largest coordinate involved and each distance
   // by a few ulps of the swatch's: 3e-6 x that scale (times lambda and the normal factor, at
@@ -246,15 +261,9 @@ std::vector<double> MatchingCost::score(const std::vector<glm::vec3>& points, co
   float shift = 0.0f;
   for (const glm::vec2& t : translations) shift = std::max({shift, std::abs(t.x), std::abs(t.y)});
   const double margin = 3.0 * grid_params_.box_low.w * 3e-6 * (static_cast<double>(scale) + shift);
-  std::vector<double> sums(translations.size(), 0.0);
-  const std::size_t point_count = points.size();
-  for (std::size_t c = 0; c < sums.size(); ++c) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < point_count; ++i)
-      sum += std::max(1.0, costs[c * point_count + i] * (1.0 - 1e-5) - margin);
-    sums[c] = sum;
-  }
-  return sums;
+  std::vector<double> pairs(costs.size());
+  for (std::size_t k = 0; k < costs.size(); ++k) pairs[k] = std::max(1.0, costs[k] * (1.0 - 1e-5) - margin);
+  return pairs;
 }
 
 }  // namespace meshquilt

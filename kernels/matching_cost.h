@@ -70,6 +70,13 @@ class MatchingCost {
   std::vector<double> score(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
                             const std::vector<glm::vec2>& translations, const std::vector<double>& factors = {});
 
+  //! The per-pair terms of score(): each pair's bound lowered by the margin, at least 1 (as
+  //! every D is), #T by #P in double, candidate-major; score()'s sums are theirs in point order.
+  //! Each holds against its point's exact Eq. 2, so the exact costs of some points plus the
+  //! terms of the others bound a candidate's Eq. 3 from below. Same preconditions and errors.
+  std::vector<double> pair_bounds(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
+                                  const std::vector<glm::vec2>& translations, const std::vector<double>& factors = {});
+
   //! The per-pair bounds behind score(), as the kernel computed them (no margin): #T by #P
   //! floats, candidate-major (index t * #P + p). Same preconditions and errors as score().
   std::vector<float> point_costs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,

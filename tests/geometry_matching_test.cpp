@@ -255,20 +255,25 @@ void layered_points(const TriMesh& swatch, std::mt19937_64& rng, bool one_piece,
 
 // The reference of the pruned search is the same rule with every candidate evaluated exactly:
 // both must choose the same translation, cost and random draw, while the pruned one evaluates
-// fewer candidates.
-void expect_pruning_changes_nothing(const TriMesh& swatch, double cell, int trials, uint64_t seed) {
+// fewer candidates. Returns how many of its evaluations the pruned search abandoned.
+int expect_pruning_changes_nothing(const TriMesh& swatch, double cell, int trials, uint64_t seed,
+                                   int abandon_block = MatchingOptions{}.abandon_block) {
   auto device = engine::open_device(engine::BackendChoice::cpu);
   MatchingOptions options;
   options.lambda = 1.0 / mean_edge_length(swatch);  // as the drivers set it
+  options.abandon_block = abandon_block;
   MatchingOptions full = options;
   full.prune = false;
   const GeometryMatcher pruned(*device, swatch, cell, options), reference(*device, swatch, cell, full);
   std::mt19937_64 rng(seed);
-  int fewer = 0, near = 0;
+  int fewer = 0, near = 0, abandoned = 0;
   for (int trial = 0; trial < trials; ++trial) {
     std::vector<Vec3> points, normals;
     layered_points(swatch, rng, trial % 2 == 1, &points, &normals);
-    ASSERT_GT(points.size(), 20u);
+    if (points.size() <= 20u) {
+      ADD_FAILURE() << "trial " << trial << ": " << points.size() << " points";
+      return 0;
+    }
     const std::vector<glm::dvec2> candidates = grid_candidates(cell);
     std::mt19937_64 a(trial), b(trial);
     const MatchResult x = pruned.match(points, normals, candidates, a);
@@ -279,15 +284,29 @@ void expect_pruning_changes_nothing(const TriMesh& swatch, double cell, int tria
     EXPECT_EQ(x.near, y.near) << "trial " << trial;
     near += x.near;
     EXPECT_EQ(y.rescored, static_cast<int>(candidates.size()));
+    EXPECT_EQ(y.abandoned, 0);
     if (x.rescored < y.rescored) ++fewer;
+    abandoned += x.abandoned;
   }
   EXPECT_GT(fewer, trials / 2);
   EXPECT_GT(near, trials) << "the near sets were single candidates: the test would not see a lost one";
+  return abandoned;
 }
 
 TEST(GeometryMatching, PrunedSearchChoosesWhatTheFullSearchChoosesOnRandomSwatches) {
   std::mt19937_64 rng(17);
   expect_pruning_changes_nothing(random_swatch(rng, 80), 0.25, 12, 3);
+}
+
+// Evaluations abandoned between blocks of a few points (on real jobs a block is an eighth of
+// thousands) leave every choice as the full search makes it.
+TEST(GeometryMatching, AbandonedEvaluationsChangeNoChoice) {
+  std::mt19937_64 rng(23);
+  EXPECT_GT(expect_pruning_changes_nothing(random_swatch(rng, 80), 0.25, 12, 5, 4), 12);
+  ChainmailOptions options = ChainmailOptions::small();
+  options.rows = 4;
+  options.columns = 6;
+  EXPECT_GT(expect_pruning_changes_nothing(make_chainmail(options), 0.3, 5, 6, 16), 5);
 }
 
 TEST(GeometryMatching, PrunedSearchChoosesWhatTheFullSearchChoosesOnChainMail) {

@@ -311,6 +311,19 @@ class MatchingCostTest : public ::testing::TestWithParam<Backend> {
       // The margin for float rounding is small: the bound still prunes.
       EXPECT_GE(scores[c], 0.99 * bound_sum) << what << " candidate " << c;
     }
+    // Pair by pair too, in double with no tolerance: the host abandons an exact evaluation on
+    // the exact costs so far plus the bounds of the points left.
+    const std::vector<double> pairs = cost.pair_bounds(query.points, query.normals, query.translations, grouped.factors);
+    EXPECT_EQ(pairs.size(), expected.size()) << what;
+    std::size_t above = 0;
+    for (std::size_t k = 0; k < std::min(pairs.size(), expected.size()); ++k)
+      if (!(pairs[k] <= expected[k]) && ++above <= 5)
+        ADD_FAILURE() << what << " pair " << k << ": " << pairs[k] << " above " << expected[k];
+    for (std::size_t c = 0; c < std::min(scores.size(), query.translations.size()); ++c) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < query.points.size(); ++i) sum += pairs[c * query.points.size() + i];
+      EXPECT_EQ(scores[c], sum) << what << " candidate " << c;
+    }
     return exact_share;
   }
 

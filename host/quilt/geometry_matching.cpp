@@ -200,6 +200,36 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
   return total;
 }
 
+double GeometryMatcher::exact_cost_up_to(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                                         const std::vector<double>& factors, const glm::dvec2& translation,
+                                         std::vector<int32_t>& faces, const double* lower, double ceiling) const {
+  const size_t bins = normal_bins_.size(), n = points.size();
+  const Vec3 shift(translation.x, translation.y, 0.0);
+  // Blocks of an eighth of the points (small sets in one block, which is evaluated in
+  // parallel): a candidate whose cost exceeds the ceiling by a fraction of the gap between its
+  // bound and its cost is known after a few blocks, the excess over the bounds being spread
+  // over the points. The Apple row's matching 11.5 -> 6.3 s.
+  const size_t block = std::max<size_t>({1, static_cast<size_t>(options_.abandon_block), (n + 7) / 8});
+  std::vector<double> left((n + block - 1) / block + 1, 0.0);  // bounds of the points from each block on
+  for (size_t b = left.size() - 1; b-- > 0;) {
+    left[b] = left[b + 1];
+    for (size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) left[b] += lower[i];
+  }
+  std::vector<double> costs(n);
+  double total = 0.0;
+  for (size_t b = 0; b * block < n; ++b) {
+    const size_t first = b * block, end = std::min(n, first + block);
+    tbb::parallel_for(tbb::blocked_range<size_t>(first, end, 64), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i], &factors[i * bins], faces[i]);
+    });
+    for (size_t i = first; i < end; ++i) total += costs[i];  // in point order, as exact_cost sums
+    // Sums of positive terms, each rounded by at most 2^-53 relative: 1e-9 covers any set of
+    // points held in memory, so the cost as exact_cost sums it exceeds the ceiling too.
+    if (end < n && (total + left[b + 1]) * (1.0 - 1e-9) > ceiling) return std::numeric_limits<double>::infinity();
+  }
+  return total;
+}
+
 std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& points,
                                                       const std::vector<Vec3>& normals,
                                                       const std::vector<double>& factors,
@@ -298,12 +328,18 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::vector<glm::vec3> fnormals(normals.begin(), normals.end());
   std::vector<glm::vec2> ftranslations(candidates.begin(), candidates.end());
   const std::vector<double> factors = normal_factors(normals);
-  const std::vector<double> bounds = kernel_->score(fpoints, fnormals, ftranslations, factors);
+  const std::vector<double> lower = kernel_->pair_bounds(fpoints, fnormals, ftranslations, factors);
+  const size_t n = points.size();
+  std::vector<double> bounds(candidates.size(), 0.0);  // summed as MatchingCost::score sums
+  for (size_t c = 0; c < candidates.size(); ++c)
+    for (size_t i = 0; i < n; ++i) bounds[c] += lower[c * n + i];
   result.scored = static_cast<int>(candidates.size());
 
   // Exact costs in the order of the bounds, until no candidate left can be within the margin
   // of the best: its bound, and so its cost, exceeds the threshold, which only falls as better
-  // candidates are found. Without pruning every candidate is evaluated.
+  // candidates are found. For the same reason an evaluation stops once the exact costs so far
+  // and the bounds of the points left exceed the threshold: the candidate is out of the near set
+  // and cannot lower the best. Without pruning every candidate is evaluated in full.
   std::vector<size_t> order(candidates.size());
   for (size_t c = 0; c < order.size(); ++c) order[c] = c;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return bounds[a] < bounds[b]; });
@@ -313,11 +349,18 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::vector<int32_t> faces(points.size(), -1);  // warm starts
   for (size_t c : order) {
     if (options_.prune && bounds[c] > threshold(best)) break;
-    const double cost = exact_cost(points, normals, factors, candidates[c], faces);
-    evaluated.emplace_back(c, cost);
-    best = std::min(best, cost);
+    ++result.rescored;
+    if (!options_.prune) {
+      evaluated.emplace_back(c, exact_cost(points, normals, factors, candidates[c], faces));
+    } else if (const double cost = exact_cost_up_to(points, normals, factors, candidates[c], faces, &lower[c * n], threshold(best));
+               cost < std::numeric_limits<double>::infinity()) {
+      evaluated.emplace_back(c, cost);
+    } else {
+      ++result.abandoned;
+      continue;
+    }
+    best = std::min(best, evaluated.back().second);
   }
-  result.rescored = static_cast<int>(evaluated.size());
   std::sort(evaluated.begin(), evaluated.end());
   std::vector<std::pair<size_t, double>> exact;  // the near set, in candidate order
   for (const auto& [c, cost] : evaluated)

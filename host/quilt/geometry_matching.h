@@ -42,13 +42,17 @@ struct MatchingOptions {
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
   int refine_iterations = 8;     //!< at most this many confirmed moves refine a local minimum
   bool prune = true;             //!< evaluate exactly only candidates whose bound can matter
+  //! A pruned evaluation may stop between blocks of max(this, an eighth of the points); the
+  //! choice does not depend on it.
+  int abandon_block = 1024;
 };
 
 struct MatchResult {
   glm::dvec2 translation{0.0};  //!< where the swatch's origin goes in the output plane
   double cost = 0.0;            //!< exact E(t) (Eq. 3) at `translation`; 0 with no points
   int scored = 0;               //!< candidates bounded by the kernel
-  int rescored = 0;             //!< candidates evaluated exactly on the host
+  int rescored = 0;             //!< candidates evaluated exactly on the host (or abandoned)
+  int abandoned = 0;            //!< of those, evaluations stopped once the candidate was out of the near set
   int near = 0;                 //!< candidates within rescore_margin of the best (exact costs)
 };
 
@@ -80,6 +84,11 @@ class GeometryMatcher {
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                     const std::vector<double>& factors, const glm::dvec2& translation,
                     std::vector<int32_t>& faces) const;
+  //! The same, or infinity once the exact costs so far plus `lower` (#P lower bounds of each
+  //! point's Eq. 2) of the points left exceed `ceiling`: then Eq. 3 does too.
+  double exact_cost_up_to(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                          const std::vector<double>& factors, const glm::dvec2& translation,
+                          std::vector<int32_t>& faces, const double* lower, double ceiling) const;
   //! Eq. 2 for one point moved into the swatch's frame, exact in double; `factors` are the
   //! point's normal bounds per bin; `face` as above.
   double point_cost(const Vec3& q, const Vec3& normal, const double* factors, int32_t& face) const;
