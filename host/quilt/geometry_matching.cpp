@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -233,7 +234,8 @@ double GeometryMatcher::exact_cost_up_to(const std::vector<Vec3>& points, const 
 std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& points,
                                                       const std::vector<Vec3>& normals,
                                                       const std::vector<double>& factors,
-                                                      const glm::dvec2& start, double cost) const {
+                                                      const glm::dvec2& start, double cost,
+                                                      std::vector<int32_t> faces) const {
   // With each point's minimizing face held, Eq. 3 becomes S(t) = sum of (1 + lambda * Dist(q_i
   // - t, f_i)) x turn_i: at least E(t), equal to it where the faces were found, convex in t and
   // cheap (one closest point per point, no search). S is lowered by reweighted Gauss-Newton
@@ -243,8 +245,6 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
   // faces anew. A periodic swatch lines up exactly with the output it was copied into; the
   // result stays within one cell of the grid candidate.
   const size_t n = points.size();
-  std::vector<int32_t> faces(n, -1);
-  exact_cost(points, normals, factors, start, faces);  // the faces at the start, found afresh
   std::vector<double> turns(n);
   std::vector<ClosestPoint> nearest(n), trial(n);
   const auto held = [&](const glm::dvec2& u, std::vector<ClosestPoint>& out) {
@@ -347,6 +347,9 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   std::vector<std::pair<size_t, double>> evaluated;
   double best = std::numeric_limits<double>::infinity();
   std::vector<int32_t> faces(points.size(), -1);  // warm starts
+  // The minimizing faces of candidates that may yet be in the near set: a refinement starts
+  // from them (exact costs find the same faces whatever the warm start).
+  std::map<size_t, std::vector<int32_t>> faces_of;
   for (size_t c : order) {
     if (options_.prune && bounds[c] > threshold(best)) break;
     ++result.rescored;
@@ -360,6 +363,7 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
       continue;
     }
     best = std::min(best, evaluated.back().second);
+    if (evaluated.back().second <= threshold(best)) faces_of[c] = faces;
   }
   std::sort(evaluated.begin(), evaluated.end());
   std::vector<std::pair<size_t, double>> exact;  // the near set, in candidate order
@@ -386,7 +390,8 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   // The minima refine independently, so they run side by side (each also spreads its points).
   std::vector<std::pair<glm::dvec2, double>> refined(minima.size());
   tbb::parallel_for(size_t{0}, minima.size(), [&](size_t k) {
-    refined[k] = refine(points, normals, factors, candidates[minima[k].second], minima[k].first);
+    refined[k] = refine(points, normals, factors, candidates[minima[k].second], minima[k].first,
+                        faces_of.at(minima[k].second));
   });
 
   // The host decides: a seeded random pick among the near-best, as image quilting does.

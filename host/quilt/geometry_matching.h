@@ -94,11 +94,12 @@ class GeometryMatcher {
   double point_cost(const Vec3& q, const Vec3& normal, const double* factors, int32_t& face) const;
   //! Per point, the lower bounds of its normal term over each normal bin (#P x bins).
   std::vector<double> normal_factors(const std::vector<Vec3>& normals) const;
-  //! Lowers Eq. 3 in x-y from a grid candidate with exact cost `cost`, within one cell of it,
-  //! by majorize-minimize steps each confirmed exactly; (translation, cost).
+  //! Lowers Eq. 3 in x-y from a grid candidate with exact cost `cost` and minimizing `faces`
+  //! (as exact_cost finds them), within one cell of it, by majorize-minimize steps each
+  //! confirmed exactly; (translation, cost).
   std::pair<glm::dvec2, double> refine(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                        const std::vector<double>& factors, const glm::dvec2& start,
-                                       double cost) const;
+                                       double cost, std::vector<int32_t> faces) const;
 
   const TriMesh& swatch_;
   MatchingOptions options_;
