@@ -2,14 +2,14 @@
 // scenario and back end, runs `meshquilt synth` several times in a child process and prints our
 // median seconds, the paper's, their ratio, faces per second, peak memory and the share of time
 // per stage, as a Markdown table. Planar rows size the plane, curved rows the --scale over the
-// base, for about the paper's output faces (or, where a row says so, its element count). Each
-// row also times the floor: a plain tiling of the same swatch to the same number of faces
+// base, for about the paper's output faces (or, where a row says so, its element count); rows
+// not in Table 1 may fix the plane instead. Each row also times the floor: a plain tiling of the same swatch to the same number of faces
 // (vertices copied and offset, binary PLY written), and gives the ratio to it.
 //
 //   table1_runner [--runs N] [--backends cpu,vulkan]
-//                 [--scenarios wire,apple,twill,bunny-weave,bunny-link] [--scale F] [--shared DIR]
+//                 [--scenarios small-chain,wire,apple,twill,bunny-weave,bunny-link] [--scale F] [--shared DIR]
 //
-// --scale multiplies the output faces (0.1 for a quick look); --shared is where data/meshes/
+// --scale multiplies the output faces of sized rows (0.1 for a quick look); --shared is where data/meshes/
 // holds the curved rows' bases (default: ../shared beside the source tree).
 
 #include <algorithm>
@@ -43,17 +43,20 @@ struct Scenario {
   long paper_elements;       // Table 1 output elements; when set, the output is sized by them
   std::string swatch_args;   // `meshquilt swatch` arguments of our closest swatch
   std::string base;          // base mesh under <shared>/data/meshes; empty: a plane
+  std::string plane;         // a fixed --plane, not sized from the paper's output
 };
 
 const std::vector<Scenario> kScenarios = {
+    // The small chain mail over a 4x4 plane: the job whose ratio to the plain tiling is watched.
+    {"small-chain", "Plane + small chain mail (not in Table 1)", 0.0, 0, 0, "chainmail --preset small", "", "4x4"},
     // 27 long wires in the paper: our sparse crimped wire mesh.
-    {"wire", "Plane + Wire", 3 * 60.0, 74792, 0, "wire", ""},
+    {"wire", "Plane + Wire", 3 * 60.0, 74792, 0, "wire", "", ""},
     // 86 apples of 3,733 faces each in the paper; ours have 5,120 (icosahedra subdivided 4 times),
     // so the plane is sized for 86 of them.
-    {"apple", "Plane + Apple", 3 * 60.0, 321046, 86, "fruit --columns 4 --rows 4 --subdivisions 4", ""},
-    {"twill", "Plane + Twill (not in Table 1)", 0.0, 361268, 0, "weave --pattern twill:2/3", ""},
-    {"bunny-weave", "Bunny + Weave", 86 * 60.0, 700815, 0, "weave", "bunny.off"},
-    {"bunny-link", "Bunny + Link", 80 * 60.0, 940622, 0, "chainmail --rows 8 --columns 6", "bunny.off"},
+    {"apple", "Plane + Apple", 3 * 60.0, 321046, 86, "fruit --columns 4 --rows 4 --subdivisions 4", "", ""},
+    {"twill", "Plane + Twill (not in Table 1)", 0.0, 361268, 0, "weave --pattern twill:2/3", "", ""},
+    {"bunny-weave", "Bunny + Weave", 86 * 60.0, 700815, 0, "weave", "bunny.off", ""},
+    {"bunny-link", "Bunny + Link", 80 * 60.0, 940622, 0, "chainmail --rows 8 --columns 6", "bunny.off", ""},
 };
 
 // The floor: copies of the swatch side by side on a grid, each one's vertices copied and offset,
@@ -100,8 +103,14 @@ int main(int argc, char** argv) {
   int runs = 3;
   double scale = 1.0;
   std::vector<std::string> backends = {"cpu", "vulkan"};
-  std::vector<std::string> scenarios = {"wire", "apple", "twill", "bunny-weave", "bunny-link"};
+  std::vector<std::string> scenarios = {"small-chain", "wire", "apple", "twill", "bunny-weave", "bunny-link"};
   std::filesystem::path shared = std::filesystem::path(MESHQUILT_SOURCE_DIR) / ".." / "shared";
+  if (argc % 2 == 0) {  // an option without its value, or --help
+    std::fprintf(stderr,
+                 "usage: table1_runner [--runs N] [--backends cpu,vulkan] [--scenarios small-chain,wire,apple,twill,"
+                 "bunny-weave,bunny-link] [--scale F] [--shared DIR]\n");
+    return 2;
+  }
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--runs") runs = std::max(1, std::stoi(value));
@@ -141,28 +150,33 @@ int main(int argc, char** argv) {
     }
     const double probe_scale = 0.2;
     char size[64];
-    if (sc.base.empty()) {
+    if (!sc.plane.empty()) {
+      std::snprintf(size, sizeof size, "%s", sc.plane.c_str());
+      domain = {"--plane", sc.plane};
+    } else if (sc.base.empty()) {
       domain = {"--plane", "1x1"};
     } else {
       std::snprintf(size, sizeof size, "%.2f", probe_scale);
       domain = {"--base", base.string(), "--scale", size};
     }
-    const auto probe = work / "probe.json";
-    std::vector<std::string> probe_run = {cli, "synth", "--swatch", swatch.string(), "--backend", "cpu", "--progress",
-                                          "none", "--stats", probe.string(), "-o", (work / "probe.ply").string()};
-    probe_run.insert(probe_run.end(), domain.begin(), domain.end());
-    meshquilt::perf::run_child(probe_run);
-    const auto probed = nlohmann::json::parse(std::ifstream(probe));
-    const double growth =
-        sc.paper_elements > 0
-            ? std::sqrt(scale * sc.paper_elements / std::max(1.0, probed["elements"].get<double>()))
-            : std::sqrt(scale * sc.paper_faces / std::max(1.0, probed["faces"].get<double>()));
-    if (sc.base.empty()) {
-      std::snprintf(size, sizeof size, "%.2fx%.2f", growth, growth);
-      domain = {"--plane", size};
-    } else {
-      std::snprintf(size, sizeof size, "%.4f", probe_scale / growth);
-      domain = {"--base", base.string(), "--scale", size};
+    if (sc.plane.empty()) {
+      const auto probe = work / "probe.json";
+      std::vector<std::string> probe_run = {cli, "synth", "--swatch", swatch.string(), "--backend", "cpu", "--progress",
+                                            "none", "--stats", probe.string(), "-o", (work / "probe.ply").string()};
+      probe_run.insert(probe_run.end(), domain.begin(), domain.end());
+      meshquilt::perf::run_child(probe_run);
+      const auto probed = nlohmann::json::parse(std::ifstream(probe));
+      const double growth =
+          sc.paper_elements > 0
+              ? std::sqrt(scale * sc.paper_elements / std::max(1.0, probed["elements"].get<double>()))
+              : std::sqrt(scale * sc.paper_faces / std::max(1.0, probed["faces"].get<double>()));
+      if (sc.base.empty()) {
+        std::snprintf(size, sizeof size, "%.2fx%.2f", growth, growth);
+        domain = {"--plane", size};
+      } else {
+        std::snprintf(size, sizeof size, "%.4f", probe_scale / growth);
+        domain = {"--base", base.string(), "--scale", size};
+      }
     }
     const std::string label = sc.paper_row + (sc.base.empty() ? " (" : " (--scale ") + size + ")";
 
