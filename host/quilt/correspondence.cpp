@@ -309,6 +309,12 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
   // default job's instructions; ties go to the lower face either way, so answers are the same).
   const FaceBvh bvh(input.mesh, BvhQuality::low);
 
+  // Pruning (b) drops every pair farther than max_distance_factor x the local mean edge, which is
+  // at most the input's longest edge: a query with no face within `reach` is dropped whatever
+  // face minimizes Eq. 1 (the Apple row's points between fruit, a sixth of its queries).
+  const double longest_edge = input.edge_length.empty() ? 0.0 : *std::max_element(input.edge_length.begin(), input.edge_length.end());
+  const double reach = options.max_distance_factor * longest_edge * (1.0 + 1e-9);
+
   // Eq. 1-2 per query. Each chunk builds its cost functions once, around a pointer to the current
   // query, so a query allocates nothing.
   std::vector<ClosestPoint> nearest(queries.size());
@@ -330,8 +336,16 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
       return (1.0 + lambda * gap) * (1.0 + glm::length(current->normal - input.face_normal[f]));
     };
     double best = 0.0;
+    // A face beyond reach costs more than 1 + lambda x reach: the search starts there, and a face
+    // that costs less is the minimum. Where none does, a query with no face within reach has no
+    // pair; the others search on.
+    const double capped = 1.0 + lambda * reach;
     for (size_t q = r.begin(); q != r.end(); ++q) {
       current = &queries[q];
+      if (capped < std::numeric_limits<double>::infinity()) {
+        nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best, capped, bound);
+        if (nearest[q].face >= 0 || bvh.closest_point(current->position, reach).face < 0) continue;
+      }
       nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best,
                                      std::numeric_limits<double>::infinity(), bound);
     }
