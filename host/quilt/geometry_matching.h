@@ -42,9 +42,9 @@ struct MatchingOptions {
   double choose_tolerance = 0.01;  //!< choose at random among refined costs <= best x (1 + tolerance)
   int refine_iterations = 8;     //!< at most this many confirmed moves refine a local minimum
   bool prune = true;             //!< evaluate exactly only candidates whose bound can matter
-  //! A pruned evaluation may stop between blocks of max(this, an eighth of the points); the
-  //! choice does not depend on it.
-  int abandon_block = 1024;
+  //! A pruned evaluation may stop between blocks of max(this, a 32nd of the points); the choice
+  //! does not depend on it.
+  int abandon_block = 256;
 };
 
 struct MatchResult {
