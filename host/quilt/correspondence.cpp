@@ -330,21 +330,25 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
       return lambda > 0.0 ? (best - 1.0) / lambda : std::numeric_limits<double>::infinity();
     };
     // A face's normal term and its bounding sphere rule most faces out without a closest point.
-    const std::function<double(int32_t)> bound = [&current, &input, lambda](int32_t f) {
+    // (Also notes whether the face may lie within reach: its sphere's gap is at most its distance.)
+    bool near_seen = false;
+    const std::function<double(int32_t)> bound = [&current, &input, lambda, reach, &near_seen](int32_t f) {
       const auto& [centre, radius] = input.face_sphere[f];
       const double gap = std::max(glm::length(current->position - centre) - radius, 0.0);
+      near_seen = near_seen || gap <= reach;
       return (1.0 + lambda * gap) * (1.0 + glm::length(current->normal - input.face_normal[f]));
     };
     double best = 0.0;
     // A face beyond reach costs more than 1 + lambda x reach: the search starts there, and a face
-    // that costs less is the minimum. Where none does, a query with no face within reach has no
-    // pair; the others search on.
+    // that costs less is the minimum. Where none does, a query whose search met no face that may
+    // lie within reach (it meets every face within its radius) has no pair; the others search on.
     const double capped = 1.0 + lambda * reach;
     for (size_t q = r.begin(); q != r.end(); ++q) {
       current = &queries[q];
       if (capped < std::numeric_limits<double>::infinity()) {
+        near_seen = false;
         nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best, capped, bound);
-        if (nearest[q].face >= 0 || bvh.closest_point(current->position, reach).face < 0) continue;
+        if (nearest[q].face >= 0 || !near_seen) continue;
       }
       nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best,
                                      std::numeric_limits<double>::infinity(), bound);
