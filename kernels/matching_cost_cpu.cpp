@@ -147,7 +147,8 @@ void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
   const uint end = std::min(dispatch.first + dispatch.count, params.invocation_count);
   if (first >= end) return;
   // Point by point across the chunk's candidates (neighbours on the candidate grid), whose
-  // queries fall in neighbouring voxels: a tenth faster than candidate by candidate.
+  // queries fall in neighbouring voxels: the default job's matching 4-10% faster than candidate
+  // by candidate.
   const uint first_candidate = first / point_count, last_candidate = (end - 1) / point_count;
   for (uint i = 0; i < point_count; ++i) {
     const MatchingPoint& p = points[i];

@@ -342,10 +342,12 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
     // A face beyond reach costs more than 1 + lambda x reach: the search starts there, and a face
     // that costs less is the minimum. Where none does, a query whose search met no face that may
     // lie within reach (it meets every face within its radius) has no pair; the others search on.
+    // (Without a distance term or without pruning (b) there is no such radius.)
+    const bool capped_first = lambda > 0.0 && std::isfinite(reach);
     const double capped = 1.0 + lambda * reach;
     for (size_t q = r.begin(); q != r.end(); ++q) {
       current = &queries[q];
-      if (capped < std::numeric_limits<double>::infinity()) {
+      if (capped_first) {
         near_seen = false;
         nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best, capped, bound);
         if (nearest[q].face >= 0 || !near_seen) continue;
