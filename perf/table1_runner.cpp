@@ -153,13 +153,13 @@ int main(int argc, char** argv) {
     if (!sc.plane.empty()) {
       std::snprintf(size, sizeof size, "%s", sc.plane.c_str());
       domain = {"--plane", sc.plane};
-    } else if (sc.base.empty()) {
-      domain = {"--plane", "1x1"};
     } else {
-      std::snprintf(size, sizeof size, "%.2f", probe_scale);
-      domain = {"--base", base.string(), "--scale", size};
-    }
-    if (sc.plane.empty()) {
+      if (sc.base.empty()) {
+        domain = {"--plane", "1x1"};
+      } else {
+        std::snprintf(size, sizeof size, "%.2f", probe_scale);
+        domain = {"--base", base.string(), "--scale", size};
+      }
       const auto probe = work / "probe.json";
       std::vector<std::string> probe_run = {cli, "synth", "--swatch", swatch.string(), "--backend", "cpu", "--progress",
                                             "none", "--stats", probe.string(), "-o", (work / "probe.ply").string()};

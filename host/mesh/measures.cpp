@@ -1,5 +1,7 @@
 #include "mesh/measures.h"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 namespace meshquilt {
@@ -23,6 +25,20 @@ std::vector<FaceSphere> face_spheres(const TriMesh& mesh) {
     spheres.push_back({centre, radius * (1.0 + 1e-12)});
   }
   return spheres;
+}
+
+std::vector<FacePlane> face_planes(const TriMesh& mesh) {
+  std::vector<FacePlane> planes(mesh.num_faces());
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+    const Vec3 cross = glm::cross(b - a, c - a);
+    const double length = glm::length(cross);
+    const double longest2 = std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+    if (length > 0.0) planes[f].normal = cross / length;
+    planes[f].planar = length > 1e-6 * longest2;
+  }
+  return planes;
 }
 
 double mean_edge_length(const TriMesh& mesh) {

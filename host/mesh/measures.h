@@ -43,6 +43,17 @@ struct FaceSphere {
 //! One sphere per face (#F). \pre indices in range.
 std::vector<FaceSphere> face_spheres(const TriMesh& mesh);
 
+//! A face's plane: its unit normal ((0,0,1) where the cross product of its edges vanishes) and
+//! whether the plane's distance bounds the face's from below (`planar`: twice the area above
+//! 1e-6 of the longest edge squared; a sliver's normal is too uncertain for that).
+struct FacePlane {
+  Vec3 normal{0.0, 0.0, 1.0};
+  bool planar = false;
+};
+
+//! One plane per face (#F). \pre indices in range.
+std::vector<FacePlane> face_planes(const TriMesh& mesh);
+
 //! vertex_normals with (0,0,1) for a vertex without area: the up direction of a swatch.
 std::vector<Vec3> vertex_normals(const TriMesh& mesh);
 

@@ -31,21 +31,8 @@ size_t draw_index(std::mt19937_64& rng, size_t n) { return static_cast<size_t>(r
 GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, double cell_size,
                                  const MatchingOptions& options)
     : swatch_(swatch), options_(options), cell_size_(cell_size),
-      mean_edge_(std::max(mean_edge_length(swatch), 1e-12)), face_spheres_(face_spheres(swatch)) {
-  face_normals_.reserve(swatch.num_faces());
-  for (const Tri& t : swatch.triangles) {
-    const Vec3 n = glm::cross(swatch.positions[t[1]] - swatch.positions[t[0]],
-                              swatch.positions[t[2]] - swatch.positions[t[0]]);
-    const double len = glm::length(n);
-    face_normals_.push_back(len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0));
-    // A sliver's normal is too uncertain for its plane to bound distances (as the kernel's).
-    double longest2 = 0.0;
-    for (int e = 0; e < 3; ++e) {
-      const Vec3 d = swatch.positions[t[(e + 1) % 3]] - swatch.positions[t[e]];
-      longest2 = std::max(longest2, glm::dot(d, d));
-    }
-    face_planar_.push_back(len > 1e-6 * longest2);
-  }
+      mean_edge_(std::max(mean_edge_length(swatch), 1e-12)), face_spheres_(face_spheres(swatch)),
+      face_planes_(face_planes(swatch)) {
   double largest = 0.0;
   for (const Vec3& p : swatch.positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   rounding_ = 1e-12 * largest;
@@ -73,7 +60,10 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   // the sphere at scale 0.4: 5.4 G -> 4.0 G instructions in matching with 6 x 6 cells (4 x 4:
   // 4.3 G). Past 8,192 faces 3 x 3: the lists are short there, and 6 x 6 took the Wire row's
   // peak memory from 455 to 542 MB in small groups (3 x 3: 465 MB, and fewer instructions).
-  normal_bins_ = bin_normals(face_normals_, swatch.num_faces() <= 8192 ? 6 : 3);
+  std::vector<Vec3> normals;
+  normals.reserve(face_planes_.size());
+  for (const FacePlane& plane : face_planes_) normals.push_back(plane.normal);
+  normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? 6 : 3);
   grid_ = build_near_face_grid(swatch, voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
                                int64_t{1} << 18, normal_bins_.bin_of);
 
@@ -84,7 +74,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   for (const Tri& t : swatch.triangles)
     device_swatch.triangles.push_back({static_cast<uint32_t>(t[0]), static_cast<uint32_t>(t[1]),
                                        static_cast<uint32_t>(t[2])});
-  for (const Vec3& n : face_normals_) device_swatch.normals.emplace_back(n);
+  for (const FacePlane& plane : face_planes_) device_swatch.normals.emplace_back(plane.normal);
   device_swatch.lambda = static_cast<float>(options.lambda);
   device_swatch.normal_bins = normal_bins_.size();
   kernel_ = std::make_unique<MatchingCost>(device, device_swatch, grid_);
@@ -95,7 +85,7 @@ GeometryMatcher::~GeometryMatcher() = default;
 double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const double* factors, int32_t& face) const {
   const double lambda = options_.lambda;
   const auto face_cost = [&](int32_t f, double distance) {
-    return (1.0 + lambda * distance) * (1.0 + glm::length(normal - face_normals_[f]));
+    return (1.0 + lambda * distance) * (1.0 + glm::length(normal - face_planes_[f].normal));
   };
   const auto distance_to = [&](int32_t f) {
     const Tri& t = swatch_.triangles[f];
@@ -107,14 +97,14 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   const double rounding = rounding_ + 1e-12 * std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
   const auto gap_to = [&](int32_t f) {
     double gap = glm::length(q - face_spheres_[f].centre) - face_spheres_[f].radius;
-    if (face_planar_[f]) {
+    if (face_planes_[f].planar) {
       const Vec3& a = swatch_.positions[swatch_.triangles[f][0]];
-      gap = std::max(gap, std::abs(glm::dot(q - a, face_normals_[f])) * (1.0 - 1e-12));
+      gap = std::max(gap, std::abs(glm::dot(q - a, face_planes_[f].normal)) * (1.0 - 1e-12));
     }
     return std::max(gap - rounding, 0.0);
   };
   const auto face_bound = [&](int32_t f) {
-    return (1.0 + lambda * gap_to(f)) * (1.0 + glm::length(normal - face_normals_[f]));
+    return (1.0 + lambda * gap_to(f)) * (1.0 + glm::length(normal - face_planes_[f].normal));
   };
   // The hinted face (nearest at a translation close to this one) costs what it costs: starting
   // from it the searches below stop sooner, and their minimum is the same.
@@ -131,7 +121,7 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
         const double nearest = 1.0 + lambda * grid_.near[k];
         if (nearest * factor > best) break;
         const auto f = static_cast<int32_t>(grid_.faces[k]);
-        const double turn = 1.0 + glm::length(normal - face_normals_[f]);
+        const double turn = 1.0 + glm::length(normal - face_planes_[f].normal);
         if (nearest * turn > best) continue;  // nor can this face, facing away
         if ((1.0 + lambda * gap_to(f)) * turn > best) continue;  // or far off
         const double c = (1.0 + lambda * distance_to(f)) * turn;
@@ -189,16 +179,8 @@ double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::v
 double GeometryMatcher::exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const std::vector<double>& factors, const glm::dvec2& translation,
                                    std::vector<int32_t>& faces) const {
-  const size_t bins = normal_bins_.size();
-  const Vec3 shift(translation.x, translation.y, 0.0);
-  // Per-point minima in parallel, summed in point order so the total is the same on every run.
-  std::vector<double> costs(points.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i], &factors[i * bins], faces[i]);
-  });
-  double total = 0.0;
-  for (double c : costs) total += c;
-  return total;
+  return exact_cost_up_to(points, normals, factors, translation, faces, nullptr,
+                          std::numeric_limits<double>::infinity());
 }
 
 double GeometryMatcher::exact_cost_up_to(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
@@ -206,16 +188,18 @@ double GeometryMatcher::exact_cost_up_to(const std::vector<Vec3>& points, const 
                                          std::vector<int32_t>& faces, const double* lower, double ceiling) const {
   const size_t bins = normal_bins_.size(), n = points.size();
   const Vec3 shift(translation.x, translation.y, 0.0);
-  // Blocks of a 32nd of the points (small sets in one block, which is evaluated in parallel): a
-  // candidate whose cost exceeds the ceiling by a fraction of the gap between its bound and its
-  // cost is known after a few blocks, the excess over the bounds being spread over the points.
-  // The Apple row's matching 11.5 -> 6.3 s with eighths, 6.1 -> 5.7 s more with 32nds.
-  const size_t block = std::max<size_t>({1, static_cast<size_t>(options_.abandon_block), (n + 31) / 32});
+  // Blocks of a 32nd of the points (small sets in one block, and without bounds all of them):
+  // a candidate whose cost exceeds the ceiling by a fraction of the gap between its bound and
+  // its cost is known after a few blocks, the excess over the bounds being spread over the
+  // points. The Apple row's matching 11.5 -> 6.3 s with eighths, 6.1 -> 5.7 s more with 32nds.
+  const size_t block =
+      lower ? std::max<size_t>({1, static_cast<size_t>(options_.abandon_block), (n + 31) / 32}) : std::max<size_t>(n, 1);
   std::vector<double> left((n + block - 1) / block + 1, 0.0);  // bounds of the points from each block on
-  for (size_t b = left.size() - 1; b-- > 0;) {
+  for (size_t b = left.size() - 1; lower && b-- > 0;) {
     left[b] = left[b + 1];
     for (size_t i = b * block; i < std::min(n, (b + 1) * block); ++i) left[b] += lower[i];
   }
+  // Per-point minima in parallel, summed in point order so the total is the same on every run.
   std::vector<double> costs(n);
   double total = 0.0;
   for (size_t b = 0; b * block < n; ++b) {
@@ -223,9 +207,9 @@ double GeometryMatcher::exact_cost_up_to(const std::vector<Vec3>& points, const 
     tbb::parallel_for(tbb::blocked_range<size_t>(first, end, 64), [&](const tbb::blocked_range<size_t>& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) costs[i] = point_cost(points[i] - shift, normals[i], &factors[i * bins], faces[i]);
     });
-    for (size_t i = first; i < end; ++i) total += costs[i];  // in point order, as exact_cost sums
+    for (size_t i = first; i < end; ++i) total += costs[i];
     // Sums of positive terms, each rounded by at most 2^-53 relative: 1e-9 covers any set of
-    // points held in memory, so the cost as exact_cost sums it exceeds the ceiling too.
+    // points held in memory, so the whole sum exceeds the ceiling too.
     if (end < n && (total + left[b + 1]) * (1.0 - 1e-9) > ceiling) return std::numeric_limits<double>::infinity();
   }
   return total;
@@ -262,7 +246,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
   const double floor = 1e-6 * mean_edge_;  // of the distances that weigh a point
   glm::dvec2 t = start;
   for (int outer = 0; outer < options_.refine_iterations; ++outer) {
-    for (size_t i = 0; i < n; ++i) turns[i] = 1.0 + glm::length(normals[i] - face_normals_[faces[i]]);
+    for (size_t i = 0; i < n; ++i) turns[i] = 1.0 + glm::length(normals[i] - face_planes_[faces[i]].normal);
     glm::dvec2 u = t;
     double s = held(u, nearest);
     for (int inner = 0; inner < 16; ++inner) {
@@ -275,8 +259,8 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
         const Tri& tri = swatch_.triangles[faces[i]];
         const int zeros = (cp.barycentric.x == 0.0) + (cp.barycentric.y == 0.0) + (cp.barycentric.z == 0.0);
         glm::dmat3 model(1.0);  // a corner: every direction moves the distance
-        if (zeros == 0 && face_planar_[faces[i]]) {
-          const Vec3& m = face_normals_[faces[i]];
+        if (zeros == 0 && face_planes_[faces[i]].planar) {
+          const Vec3& m = face_planes_[faces[i]].normal;
           model = glm::outerProduct(m, m);
         } else if (zeros == 1) {
           const int off = cp.barycentric.x == 0.0 ? 0 : cp.barycentric.y == 0.0 ? 1 : 2;

@@ -85,7 +85,8 @@ class GeometryMatcher {
                     const std::vector<double>& factors, const glm::dvec2& translation,
                     std::vector<int32_t>& faces) const;
   //! The same, or infinity once the exact costs so far plus `lower` (#P lower bounds of each
-  //! point's Eq. 2) of the points left exceed `ceiling`: then Eq. 3 does too.
+  //! point's Eq. 2) of the points left exceed `ceiling`: then Eq. 3 does too. Without `lower`,
+  //! exact_cost.
   double exact_cost_up_to(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                           const std::vector<double>& factors, const glm::dvec2& translation,
                           std::vector<int32_t>& faces, const double* lower, double ceiling) const;
@@ -109,9 +110,8 @@ class GeometryMatcher {
   //! (a plane distance and a closest point's distance may each be off by a few units in the last
   //! place of the coordinates, which near a face is not small relative to the distance).
   double rounding_;
-  std::vector<Vec3> face_normals_;
   std::vector<FaceSphere> face_spheres_;  //!< a quick lower bound of Dist
-  std::vector<uint8_t> face_planar_;  //!< whether the face's plane distance is a lower bound of Dist too
+  std::vector<FacePlane> face_planes_;    //!< Eq. 1's normals; where planar, another bound of Dist
   std::unique_ptr<FaceBvh> bvh_;
   NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them
   NearFaceGrid grid_;

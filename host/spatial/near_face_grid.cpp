@@ -81,25 +81,14 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   }
 
   const std::vector<FaceSphere> spheres = face_spheres(mesh);
-  // Per face its box, and its unit normal where the face is not a sliver (a sliver's normal is
-  // too uncertain for its plane to bound distances): the bounds of listed entries below.
-  struct FaceShape {
-    Vec3 low, high, normal{0.0};
-    bool planar = false;
-  };
-  std::vector<FaceShape> shapes(mesh.num_faces());
+  // Per face its box and its plane: the bounds of listed entries below.
+  std::vector<Box3> boxes(mesh.num_faces());
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
     const Tri& t = mesh.triangles[f];
     const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
-    FaceShape& shape = shapes[f];
-    shape.low = glm::min(glm::min(a, b), c);
-    shape.high = glm::max(glm::max(a, b), c);
-    const Vec3 cross = glm::cross(b - a, c - a);
-    const double longest2 = std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
-    const double length = glm::length(cross);
-    shape.planar = length > 1e-6 * longest2;
-    if (shape.planar) shape.normal = cross / length;
+    boxes[f] = {glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c)};
   }
+  const std::vector<FacePlane> planes = face_planes(mesh);
   const FaceBvh bvh(mesh);
   // Every point within pad of a voxel lies within `radius` of its centre.
   const double radius = 0.5 * std::sqrt(3.0) * voxel * (1.0 + 1e-9) + std::sqrt(3.0) * pad;
@@ -238,12 +227,13 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     // box, or than the voxel's box's gap from the face's plane; each less pad again for rounding.
     const Vec3 half(0.5 * voxel + pad), low = centre - half, high = centre + half;
     for (auto it = s.found.begin(); it != end_listed; ++it) {
-      const FaceShape& shape = shapes[it->second];
+      const Box3& box = boxes[it->second];
+      const FacePlane& plane = planes[it->second];
       double near = it->first - radius;
-      near = std::max(near, glm::length(glm::max(glm::max(shape.low - high, low - shape.high), Vec3(0.0))) - pad);
-      if (shape.planar) {
+      near = std::max(near, glm::length(glm::max(glm::max(box.lo - high, low - box.hi), Vec3(0.0))) - pad);
+      if (plane.planar) {
         const Vec3& a = mesh.positions[mesh.triangles[it->second][0]];
-        near = std::max(near, std::abs(glm::dot(centre - a, shape.normal)) - glm::dot(half, glm::abs(shape.normal)) - pad);
+        near = std::max(near, std::abs(glm::dot(centre - a, plane.normal)) - glm::dot(half, glm::abs(plane.normal)) - pad);
       }
       it->first = std::max(near, 0.0);
     }
