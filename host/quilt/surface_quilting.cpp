@@ -77,7 +77,10 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
     if (options.cancel) options.cancel->check();
   };
 
-  const QuiltSwatch swatch = prepare_swatch(input_swatch);
+  const QuiltSwatch swatch = [&] {
+    StageTimer timer(seconds, "swatch");
+    return prepare_swatch(input_swatch);
+  }();
   const BaseSurface base(base_mesh);
   stats.base_faces = static_cast<int>(base_mesh.num_faces());
   stats.diagonal = base.diagonal;
@@ -106,7 +109,11 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
   matching.lambda = options.lambda / swatch.mean_edge;
   PatchStepOptions step = options.step;
   step.correspondence.lambda = options.lambda / swatch.mean_edge;
-  const GeometryMatcher matcher(device, swatch.mesh, cell, matching);
+  // The matcher's nearest-face grid, BVH and device buffers.
+  const GeometryMatcher matcher = [&] {
+    StageTimer timer(seconds, "index");
+    return GeometryMatcher(device, swatch.mesh, cell, matching);
+  }();
 
   SurfaceCells cells;
   {
