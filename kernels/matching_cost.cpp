@@ -28,6 +28,16 @@ using namespace kernels::matching_cost_layout;
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// A buffer of `count` T, to be written through the pointer returned (mapped device memory, or
+// host memory on the CPU back end): no staging copy, which for the Apple row's 7 M list entries
+// cost a tenth of a second in page faults and copying. A binding may not be empty: an empty
+// array still gets one word.
+template <typename T>
+T* allocate(engine::Device& device, std::unique_ptr<engine::Buffer>& target, std::size_t count) {
+  target = device.create_buffer(std::max<std::size_t>(count * sizeof(T), 4));
+  return static_cast<T*>(target->data());
+}
+
 }  // namespace
 
 const engine::KernelSpec& matching_cost_kernel() {
@@ -66,7 +76,8 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
   for (std::uint32_t f : grid.faces)
     if (f >= face_count) invalid("the nearest-face grid lists face " + std::to_string(f) + " of " + std::to_string(face_count));
 
-  std::vector<MatchingFace> faces(face_count);
+  // Each array is written straight into its buffer (see allocate).
+  auto* faces = allocate<MatchingFace>(device_, faces_, face_count);
   for (std::size_t f = 0; f < face_count; ++f) {
     const auto& tri = swatch.triangles[f];
     for (std::uint32_t v : tri)
@@ -106,15 +117,15 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
     invalid("the nearest-face grid is malformed");
   if (swatch.normal_bins == 0) invalid("no normal bins");
   bins_ = swatch.normal_bins;
-  std::vector<MatchingListed> listed(grid.faces.size());
-  for (std::size_t k = 0; k < listed.size(); ++k) listed[k] = {grid.faces[k], grid.near[k]};
-  std::vector<MatchingGroup> groups(grid.group_label.size());
-  for (std::size_t g = 0; g < groups.size(); ++g) {
+  auto* listed = allocate<MatchingListed>(device_, voxel_faces_, grid.faces.size());
+  for (std::size_t k = 0; k < grid.faces.size(); ++k) listed[k] = {grid.faces[k], grid.near[k]};
+  auto* groups = allocate<MatchingGroup>(device_, groups_, grid.group_label.size());
+  for (std::size_t g = 0; g < grid.group_label.size(); ++g) {
     if (grid.group_label[g] >= bins_ || grid.group_first[g] >= grid.group_first[g + 1])
       invalid("the nearest-face grid is malformed");
     groups[g] = {grid.group_first[g], grid.group_first[g + 1], grid.group_label[g], grid.near[grid.group_first[g]]};
   }
-  std::vector<MatchingVoxel> voxels(voxel_count);
+  auto* voxels = allocate<MatchingVoxel>(device_, voxels_, voxel_count);
   for (std::size_t v = 0; v < voxel_count; ++v) {
     voxels[v] = {grid.group_start[v], grid.group_start[v + 1] - grid.group_start[v], round_down(grid.reach[v]), 0.0f};
   }
@@ -124,16 +135,6 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
   grid_params_.grid_nx = grid.size.x;
   grid_params_.grid_ny = grid.size.y;
   grid_params_.grid_nz = grid.size.z;
-
-  auto upload = [&](std::unique_ptr<engine::Buffer>& buffer, const void* data, std::size_t bytes) {
-    // A binding may not be empty: a grid that lists no face still gets one word.
-    buffer = device_.create_buffer(std::max<std::size_t>(bytes, 4));
-    if (bytes > 0) std::memcpy(buffer->data(), data, bytes);
-  };
-  upload(faces_, faces.data(), faces.size() * sizeof(MatchingFace));
-  upload(voxel_faces_, listed.data(), listed.size() * sizeof(MatchingListed));
-  upload(voxels_, voxels.data(), voxels.size() * sizeof(MatchingVoxel));
-  upload(groups_, groups.data(), groups.size() * sizeof(MatchingGroup));
 }
 
 MatchingCost::~MatchingCost() = default;

@@ -301,22 +301,35 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       }
     });
   }
+  // Part p holds voxels [p n.x, (p + 1) n.x) in order; each is copied into place at offsets
+  // summed over the parts before it, in parallel (a serial append of the Apple row's 7 M
+  // entries, with the arrays regrown as they filled, took a quarter of the build).
+  std::vector<size_t> entry_offset(parts.size() + 1, 0), group_offset(parts.size() + 1, 0);
+  for (size_t p = 0; p < parts.size(); ++p) {
+    entry_offset[p + 1] = entry_offset[p] + parts[p].faces.size();
+    group_offset[p + 1] = group_offset[p] + parts[p].group_sizes.size();
+  }
   grid.start.assign(count + 1, 0);
   grid.group_start.assign(count + 1, 0);
-  grid.group_first.assign(1, 0);
-  int64_t v = 0;
-  for (Part& part : parts) {
-    for (size_t m = 0; m < part.counts.size(); ++m) {
-      grid.start[v + 1] = grid.start[v] + part.counts[m];
-      grid.group_start[v + 1] = grid.group_start[v] + part.group_counts[m];
-      ++v;
+  grid.faces.resize(entry_offset.back());
+  grid.near.resize(entry_offset.back());
+  grid.group_first.assign(group_offset.back() + 1, 0);
+  grid.group_label.resize(group_offset.back());
+  tbb::parallel_for(size_t{0}, parts.size(), [&](size_t p) {
+    Part& part = parts[p];
+    auto v = static_cast<int64_t>(p) * n.x;
+    uint32_t entries = static_cast<uint32_t>(entry_offset[p]), groups = static_cast<uint32_t>(group_offset[p]);
+    for (size_t m = 0; m < part.counts.size(); ++m, ++v) {
+      grid.start[v + 1] = entries += part.counts[m];
+      grid.group_start[v + 1] = groups += part.group_counts[m];
     }
-    for (uint32_t size : part.group_sizes) grid.group_first.push_back(grid.group_first.back() + size);
-    grid.group_label.insert(grid.group_label.end(), part.group_labels.begin(), part.group_labels.end());
-    grid.faces.insert(grid.faces.end(), part.faces.begin(), part.faces.end());
-    grid.near.insert(grid.near.end(), part.near.begin(), part.near.end());
-    part = Part{};  // released as it is joined
-  }
+    uint32_t first = static_cast<uint32_t>(entry_offset[p]);
+    for (size_t g = 0; g < part.group_sizes.size(); ++g) grid.group_first[group_offset[p] + g + 1] = first += part.group_sizes[g];
+    std::copy(part.group_labels.begin(), part.group_labels.end(), grid.group_label.begin() + static_cast<std::ptrdiff_t>(group_offset[p]));
+    std::copy(part.faces.begin(), part.faces.end(), grid.faces.begin() + static_cast<std::ptrdiff_t>(entry_offset[p]));
+    std::copy(part.near.begin(), part.near.end(), grid.near.begin() + static_cast<std::ptrdiff_t>(entry_offset[p]));
+    part = Part{};  // released as it is copied
+  });
   return grid;
 }
 
