@@ -166,8 +166,8 @@ struct JoinedInput {
   std::vector<int32_t> face_element, face_local;
   std::vector<Vec3> face_normal;  // unit, zero for degenerate faces
   std::vector<FaceSphere> face_sphere;
-  // The faces around each vertex in compressed rows (a counting sort: this is built per patch,
-  // and a sort of every edge cost the Apple row a fifth of a second).
+  // The faces around each vertex in compressed rows (a counting sort: this is built per patch;
+  // sorting every edge instead, the Apple row's correspondence took 1.46 s against 1.08).
   std::vector<int32_t> vertex_face_first, vertex_faces;
   double longest_edge = 0.0;
 

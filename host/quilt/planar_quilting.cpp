@@ -39,10 +39,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   QuiltStats stats;
   auto& seconds = stats.stage_seconds;
 
-  const QuiltSwatch swatch = [&] {
-    StageTimer timer(seconds, "swatch");
-    return prepare_swatch(input_swatch);
-  }();
+  const QuiltSwatch swatch = timed(seconds, "swatch", [&] { return prepare_swatch(input_swatch); });
   const glm::dvec2 extent = swatch.extent;
   const double cell = std::min(extent.x, extent.y) / std::max(4, options.cells_across_swatch);
   const Rect2 domain{glm::dvec2(0.0), glm::dvec2(options.width * extent.x, options.height * extent.y)};
@@ -66,10 +63,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   PatchStepOptions step = options.step;
   step.correspondence.lambda = options.lambda / swatch.mean_edge;
   // The matcher's nearest-face grid, BVH and device buffers.
-  const GeometryMatcher matcher = [&] {
-    StageTimer timer(seconds, "index");
-    return GeometryMatcher(device, swatch.mesh, cell, matching);
-  }();
+  const GeometryMatcher matcher = timed(seconds, "index", [&] { return GeometryMatcher(device, swatch.mesh, cell, matching); });
 
   SeedFinder seeds(grid.nx, grid.ny);
   HoleTracker holes(seeds, options.seed_attempts);

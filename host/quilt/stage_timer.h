@@ -24,4 +24,12 @@ class StageTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
+//! f(), with the seconds it took added to `seconds[stage]`: for a stage whose result is a const
+//! (the value is returned as f returns it, so a type that cannot move works too).
+template <typename F>
+auto timed(std::map<std::string, double>& seconds, const char* stage, F&& f) {
+  StageTimer timer(seconds, stage);
+  return f();
+}
+
 }  // namespace meshquilt

@@ -77,10 +77,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
     if (options.cancel) options.cancel->check();
   };
 
-  const QuiltSwatch swatch = [&] {
-    StageTimer timer(seconds, "swatch");
-    return prepare_swatch(input_swatch);
-  }();
+  const QuiltSwatch swatch = timed(seconds, "swatch", [&] { return prepare_swatch(input_swatch); });
   const BaseSurface base(base_mesh);
   stats.base_faces = static_cast<int>(base_mesh.num_faces());
   stats.diagonal = base.diagonal;
@@ -110,10 +107,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
   PatchStepOptions step = options.step;
   step.correspondence.lambda = options.lambda / swatch.mean_edge;
   // The matcher's nearest-face grid, BVH and device buffers.
-  const GeometryMatcher matcher = [&] {
-    StageTimer timer(seconds, "index");
-    return GeometryMatcher(device, swatch.mesh, cell, matching);
-  }();
+  const GeometryMatcher matcher = timed(seconds, "index", [&] { return GeometryMatcher(device, swatch.mesh, cell, matching); });
 
   SurfaceCells cells;
   {

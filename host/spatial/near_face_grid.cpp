@@ -302,8 +302,8 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
     });
   }
   // Part p holds voxels [p n.x, (p + 1) n.x) in order; each is copied into place at offsets
-  // summed over the parts before it, in parallel (a serial append of the Apple row's 7 M
-  // entries, with the arrays regrown as they filled, took a quarter of the build).
+  // summed over the parts before it, in parallel (appended in turn to arrays regrown as they
+  // filled, the fruit's 7 M entries were copied twice or more, one thread at a time).
   std::vector<size_t> entry_offset(parts.size() + 1, 0), group_offset(parts.size() + 1, 0);
   for (size_t p = 0; p < parts.size(); ++p) {
     entry_offset[p + 1] = entry_offset[p] + parts[p].faces.size();
@@ -317,15 +317,21 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   grid.group_label.resize(group_offset.back());
   tbb::parallel_for(size_t{0}, parts.size(), [&](size_t p) {
     Part& part = parts[p];
-    auto v = static_cast<int64_t>(p) * n.x;
-    uint32_t entries = static_cast<uint32_t>(entry_offset[p]), groups = static_cast<uint32_t>(group_offset[p]);
-    for (size_t m = 0; m < part.counts.size(); ++m, ++v) {
-      grid.start[v + 1] = entries += part.counts[m];
-      grid.group_start[v + 1] = groups += part.group_counts[m];
+    const size_t first_voxel = p * static_cast<size_t>(n.x), first_group = group_offset[p];
+    auto entries = static_cast<uint32_t>(entry_offset[p]);
+    auto groups = static_cast<uint32_t>(first_group);
+    for (size_t m = 0; m < part.counts.size(); ++m) {
+      entries += part.counts[m];
+      groups += part.group_counts[m];
+      grid.start[first_voxel + m + 1] = entries;
+      grid.group_start[first_voxel + m + 1] = groups;
     }
-    uint32_t first = static_cast<uint32_t>(entry_offset[p]);
-    for (size_t g = 0; g < part.group_sizes.size(); ++g) grid.group_first[group_offset[p] + g + 1] = first += part.group_sizes[g];
-    std::copy(part.group_labels.begin(), part.group_labels.end(), grid.group_label.begin() + static_cast<std::ptrdiff_t>(group_offset[p]));
+    auto group_end = static_cast<uint32_t>(entry_offset[p]);
+    for (size_t g = 0; g < part.group_sizes.size(); ++g) {
+      group_end += part.group_sizes[g];
+      grid.group_first[first_group + g + 1] = group_end;
+    }
+    std::copy(part.group_labels.begin(), part.group_labels.end(), grid.group_label.begin() + static_cast<std::ptrdiff_t>(first_group));
     std::copy(part.faces.begin(), part.faces.end(), grid.faces.begin() + static_cast<std::ptrdiff_t>(entry_offset[p]));
     std::copy(part.near.begin(), part.near.end(), grid.near.begin() + static_cast<std::ptrdiff_t>(entry_offset[p]));
     part = Part{};  // released as it is copied
