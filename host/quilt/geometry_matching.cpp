@@ -64,6 +64,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   normals.reserve(face_planes_.size());
   for (const FacePlane& plane : face_planes_) normals.push_back(plane.normal);
   normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? 6 : 3);
+  static_assert(6 * 6 <= kMaxBins);  // a voxel has at most one group per bin
   grid_ = build_near_face_grid(swatch, voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
                                int64_t{1} << 18, normal_bins_.bin_of);
 
@@ -78,6 +79,9 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   device_swatch.lambda = static_cast<float>(options.lambda);
   device_swatch.normal_bins = normal_bins_.size();
   kernel_ = std::make_unique<MatchingCost>(device, device_swatch, grid_);
+  groups_.resize(grid_.group_label.size());
+  for (size_t g = 0; g < groups_.size(); ++g)
+    groups_[g] = {grid_.group_first[g], grid_.group_first[g + 1], grid_.group_label[g], grid_.near[grid_.group_first[g]]};
 }
 
 GeometryMatcher::~GeometryMatcher() = default;
@@ -115,9 +119,9 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     // nearest first: once one cannot beat or tie the best, none after it in the group can. Ties
     // go to the lower face index, as in the BVH's search, so that the face found (a hint, and
     // the refinement's correspondence) does not depend on the order of the scan or the hint.
-    const auto scan = [&](uint32_t g) {
-      const double factor = factors[grid_.group_label[g]];
-      for (uint32_t k = grid_.group_first[g]; k < grid_.group_first[g + 1]; ++k) {
+    const auto scan = [&](const ListGroup& g) {
+      const double factor = factors[g.label];
+      for (uint32_t k = g.first; k < g.end; ++k) {
         const double nearest = 1.0 + lambda * grid_.near[k];
         if (nearest * factor > best) break;
         const auto f = static_cast<int32_t>(grid_.faces[k]);
@@ -131,21 +135,24 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
         }
       }
     };
-    const uint32_t first = grid_.group_start[voxel], end = grid_.group_start[voxel + 1];
-    const auto group_bound = [&](uint32_t g) {
-      return (1.0 + lambda * grid_.near[grid_.group_first[g]]) * factors[grid_.group_label[g]];
-    };
+    // Each group's bound once; the lists of the groups that may be scanned are fetched before
+    // the first scan, which would otherwise wait on each in turn.
+    const ListGroup* groups = groups_.data() + grid_.group_start[voxel];
+    const uint32_t count = grid_.group_start[voxel + 1] - grid_.group_start[voxel];
+    double bounds[kMaxBins];
     // The most promising group first, so that the others are mostly passed over whole.
-    uint32_t lowest = first;
-    double lowest_bound = first < end ? group_bound(first) : 0.0;
-    for (uint32_t g = first + 1; g < end; ++g)
-      if (const double bound = group_bound(g); bound < lowest_bound) {
-        lowest = g;
-        lowest_bound = bound;
+    uint32_t lowest = 0;
+    for (uint32_t g = 0; g < count; ++g) {
+      bounds[g] = (1.0 + lambda * groups[g].near) * factors[groups[g].label];
+      if (bounds[g] <= best) {
+        __builtin_prefetch(&grid_.near[groups[g].first]);
+        __builtin_prefetch(&grid_.faces[groups[g].first]);
       }
-    if (lowest < end) scan(lowest);
-    for (uint32_t g = first; g < end; ++g)
-      if (g != lowest && group_bound(g) <= best) scan(g);
+      if (bounds[g] < bounds[lowest]) lowest = g;
+    }
+    if (count > 0) scan(groups[lowest]);
+    for (uint32_t g = 0; g < count; ++g)
+      if (g != lowest && bounds[g] <= best) scan(groups[g]);
     // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
     if (best < 1.0 + lambda * grid_.reach[voxel]) return best;
   }

@@ -115,6 +115,15 @@ class GeometryMatcher {
   std::unique_ptr<FaceBvh> bvh_;
   NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them
   NearFaceGrid grid_;
+  //! grid_'s groups in one array, each with its label and its first entry's `near` (which bounds
+  //! the group): an exact cost reads them in one pass per voxel, not across three arrays.
+  struct ListGroup {
+    uint32_t first, end, label;
+    float near;
+  };
+  std::vector<ListGroup> groups_;
+  //! Normal bins, and so groups per voxel, are at most 6 x 6.
+  static constexpr size_t kMaxBins = 36;
   std::unique_ptr<MatchingCost> kernel_;
 };
 
