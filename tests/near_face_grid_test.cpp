@@ -246,6 +246,28 @@ TEST(NearFaceGrid, FarVoxelsAreBoundedByTheirNearestFace) {
     EXPECT_GE(grid.reach[v], nearest - 2.0 * half_diagonal - 1e-9) << "at " << q.x << " " << q.y << " " << q.z;
   }
   EXPECT_GT(far, 1000);
+  // A far voxel also names a face nearest its centre (a start for exact searches); others none.
+  int named = 0;
+  for (int64_t v = 0; v < static_cast<int64_t>(grid.reach.size()); ++v) {
+    const int32_t f = grid.nearest_face[v];
+    if (grid.start[v] != grid.start[v + 1]) {
+      ASSERT_EQ(f, -1) << "voxel " << v;
+      continue;
+    }
+    ASSERT_GE(f, 0) << "voxel " << v;
+    ASSERT_LT(f, static_cast<int32_t>(mesh.num_faces()));
+    const int64_t i = v % grid.size.x, j = (v / grid.size.x) % grid.size.y, k = v / (int64_t{grid.size.x} * grid.size.y);
+    const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * grid.voxel;
+    const auto distance = [&](size_t g) {
+      const Tri& t = mesh.triangles[g];
+      return reference_distance(centre, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+    };
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t g = 0; g < mesh.num_faces(); ++g) nearest = std::min(nearest, distance(g));
+    ASSERT_LE(distance(static_cast<size_t>(f)), nearest + 1e-12) << "voxel " << v;
+    ++named;
+  }
+  EXPECT_GT(named, 100);
 }
 
 TEST(NearFaceGrid, OutsideTheGridThereIsNoVoxel) {

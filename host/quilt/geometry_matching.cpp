@@ -155,6 +155,15 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
       if (g != lowest && bounds[g] <= best) scan(groups[g]);
     // Every unlisted face costs at least 1 + lambda * reach (D >= 1 + lambda * Dist).
     if (best < 1.0 + lambda * grid_.reach[voxel]) return best;
+    // A far voxel's nearest face is often cheaper than the hint (found at another translation):
+    // the search below then starts from the lower cost and meets fewer faces.
+    if (const int32_t f = grid_.nearest_face[voxel]; f >= 0 && f != face) {
+      const double c = face_cost(f, distance_to(f));
+      if (c < best || (c == best && f < face)) {
+        best = c;
+        face = f;
+      }
+    }
   }
   // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win; within that,
   // a face's normal term and its bounding sphere rule most out without a closest point (far

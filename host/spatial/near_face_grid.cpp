@@ -121,6 +121,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   };
   std::vector<Part> parts(static_cast<size_t>(n.y) * n.z);
   grid.reach.assign(count, 0.0);
+  grid.nearest_face.assign(count, -1);
   const auto centre_of = [&](int i, int j, int k) { return grid.origin + (Vec3(i, j, k) + 0.5) * voxel; };
   const double slack = 1e-9 * voxel;  // keeps the early stops below conservative under rounding
   // The faces that can matter to a block's voxels, nearest sphere first (see above).
@@ -297,7 +298,9 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
         const int64_t w = far_voxels[m];
         const int i = static_cast<int>(w % n.x), j = static_cast<int>((w / n.x) % n.y), k = static_cast<int>(w / (int64_t{n.x} * n.y));
         const Vec3 centre = grid.origin + (Vec3(i, j, k) + 0.5) * voxel;
-        grid.reach[w] = std::max(grid.reach[w], bvh.closest_point(centre).distance - radius);
+        const ClosestPoint nearest = bvh.closest_point(centre);
+        grid.reach[w] = std::max(grid.reach[w], nearest.distance - radius);
+        grid.nearest_face[w] = nearest.face;
       }
     });
   }

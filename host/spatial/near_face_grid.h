@@ -30,6 +30,9 @@ struct NearFaceGrid {
   //! (0 when nothing is known). Both bounds also hold a little past the voxel's walls (1e-6 of
   //! a voxel), for points rounded into a neighbour.
   std::vector<double> reach;
+  //! Per voxel that lists no face, the face nearest its centre (-1 elsewhere): a start for a
+  //! search from a point in it, whose answer lies on the swatch's side facing it.
+  std::vector<int32_t> nearest_face;
   //! Each voxel's list in groups of faces with one label (`face_groups` of build_near_face_grid;
   //! one group without labels), each group in increasing `near`: voxel v's groups are
   //! [group_start[v], group_start[v + 1]); group g lists faces [group_first[g], group_first[g + 1])
