@@ -63,8 +63,7 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   std::vector<Vec3> normals;
   normals.reserve(face_planes_.size());
   for (const FacePlane& plane : face_planes_) normals.push_back(plane.normal);
-  normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? 6 : 3);
-  static_assert(6 * 6 <= kMaxBins);  // a voxel has at most one group per bin
+  normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? kMaxBinsPerSide : 3);
   grid_ = build_near_face_grid(swatch, voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
                                int64_t{1} << 18, normal_bins_.bin_of);
 
@@ -119,8 +118,8 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     // nearest first: once one cannot beat or tie the best, none after it in the group can. Ties
     // go to the lower face index, as in the BVH's search, so that the face found (a hint, and
     // the refinement's correspondence) does not depend on the order of the scan or the hint.
-    const auto scan = [&](const ListGroup& g) {
-      const double factor = factors[g.label];
+    const auto scan = [&](const kernels::matching_cost_layout::MatchingGroup& g) {
+      const double factor = factors[g.bin];
       for (uint32_t k = g.first; k < g.end; ++k) {
         const double nearest = 1.0 + lambda * grid_.near[k];
         if (nearest * factor > best) break;
@@ -137,13 +136,13 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     };
     // Each group's bound once; the lists of the groups that may be scanned are fetched before
     // the first scan, which would otherwise wait on each in turn.
-    const ListGroup* groups = groups_.data() + grid_.group_start[voxel];
+    const kernels::matching_cost_layout::MatchingGroup* groups = groups_.data() + grid_.group_start[voxel];
     const uint32_t count = grid_.group_start[voxel + 1] - grid_.group_start[voxel];
     double bounds[kMaxBins];
     // The most promising group first, so that the others are mostly passed over whole.
     uint32_t lowest = 0;
     for (uint32_t g = 0; g < count; ++g) {
-      bounds[g] = (1.0 + lambda * groups[g].near) * factors[groups[g].label];
+      bounds[g] = (1.0 + lambda * groups[g].near) * factors[groups[g].bin];
       if (bounds[g] <= best) {
         __builtin_prefetch(&grid_.near[groups[g].first]);
         __builtin_prefetch(&grid_.faces[groups[g].first]);

@@ -22,6 +22,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "matching_cost_layout.h"
 #include "mesh/measures.h"
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
@@ -115,15 +116,13 @@ class GeometryMatcher {
   std::unique_ptr<FaceBvh> bvh_;
   NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them
   NearFaceGrid grid_;
-  //! grid_'s groups in one array, each with its label and its first entry's `near` (which bounds
-  //! the group): an exact cost reads them in one pass per voxel, not across three arrays.
-  struct ListGroup {
-    uint32_t first, end, label;
-    float near;
-  };
-  std::vector<ListGroup> groups_;
-  //! Normal bins, and so groups per voxel, are at most 6 x 6.
-  static constexpr size_t kMaxBins = 36;
+  //! grid_'s groups in one array as the kernel holds them (entries, bin, the first entry's
+  //! `near`, which bounds the group): an exact cost reads them in one pass per voxel, not across
+  //! three arrays.
+  std::vector<kernels::matching_cost_layout::MatchingGroup> groups_;
+  //! Normal bins per side of the octahedral map at most, and so groups per voxel at most.
+  static constexpr int kMaxBinsPerSide = 6;
+  static constexpr size_t kMaxBins = kMaxBinsPerSide * kMaxBinsPerSide;
   std::unique_ptr<MatchingCost> kernel_;
 };
 
