@@ -84,11 +84,13 @@ float scan_group(const Swatch& s, const MatchingGroup& g, float factor, vec3 q, 
     if ((1.0f + lambda * listed.near) * factor >= best) break;
     const MatchingFace& f = s.faces[listed.face];
     const float normal_factor = 1.0f + glm::length(n - vec3(f.normal));
-    if ((1.0f + lambda * listed.near) * normal_factor >= best) continue;  // nor can this face, facing away
-    const float sphere_gap = std::max(glm::length(q - vec3(f.sphere)) - f.sphere.w, 0.0f);
+    const float sphere_gap = glm::length(q - vec3(f.sphere)) - f.sphere.w;
     // The distance to the face's plane is at most the distance to the face.
     const float plane_gap = f.normal.w == 0.0f ? std::abs(glm::dot(q - vec3(f.a), vec3(f.normal))) : 0.0f;
-    if ((1.0f + lambda * std::max(sphere_gap, plane_gap)) * normal_factor >= best) continue;
+    // Nor can a face facing away or far off. One test of the larger of the three distance bounds
+    // rejects what the shader's two tests reject: a branch per bound mispredicts more than the
+    // sphere's distance it may spare (the default job's matching 1.08 -> 1.04 s, median of 7).
+    if ((1.0f + lambda * std::max(std::max(sphere_gap, plane_gap), listed.near)) * normal_factor >= best) continue;
     const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f, f.a.w != 0.0f);
     best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
   }
