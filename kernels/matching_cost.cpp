@@ -112,18 +112,18 @@ MatchingCost::MatchingCost(engine::Device& device, const MatchingSwatch& swatch,
     return rounded;
   };
   if (grid.near.size() != grid.faces.size() || grid.group_start.size() != voxel_count + 1 ||
-      grid.group_first.size() != grid.group_label.size() + 1 || grid.group_start.back() != grid.group_label.size() ||
-      grid.group_first.back() != grid.faces.size())
+      grid.group_start.back() != grid.groups.size())
     invalid("the nearest-face grid is malformed");
   if (swatch.normal_bins == 0) invalid("no normal bins");
   bins_ = swatch.normal_bins;
   auto* listed = allocate<MatchingListed>(device_, voxel_faces_, grid.faces.size());
   for (std::size_t k = 0; k < grid.faces.size(); ++k) listed[k] = {grid.faces[k], grid.near[k]};
-  auto* groups = allocate<MatchingGroup>(device_, groups_, grid.group_label.size());
-  for (std::size_t g = 0; g < grid.group_label.size(); ++g) {
-    if (grid.group_label[g] >= bins_ || grid.group_first[g] >= grid.group_first[g + 1])
+  auto* groups = allocate<MatchingGroup>(device_, groups_, grid.groups.size());
+  for (std::size_t g = 0; g < grid.groups.size(); ++g) {
+    const FaceGroup& group = grid.groups[g];
+    if (group.label >= bins_ || group.first >= group.end || group.end > grid.faces.size())
       invalid("the nearest-face grid is malformed");
-    groups[g] = {grid.group_first[g], grid.group_first[g + 1], grid.group_label[g], grid.near[grid.group_first[g]]};
+    groups[g] = {group.first, group.end, group.label, group.near};
   }
   auto* voxels = allocate<MatchingVoxel>(device_, voxels_, voxel_count);
   for (std::size_t v = 0; v < voxel_count; ++v) {

@@ -479,7 +479,7 @@ TEST_P(MatchingCostTest, RejectsBadInput) {
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{0, 0}}, {1.0, 1.0}), InputError);  // one bin, two factors
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{0, 0}}, {NAN}), InputError);
   broken = grid;
-  broken.group_label[0] = 1;  // the swatch has one bin
+  broken.groups[0].label = 1;  // the swatch has one bin
   EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);
   EXPECT_NEAR(cost.score({{0.2f, 0.2f, 1.0f}}, {{0, 0, 1}}, {{0, 0}})[0], 2.0, 1e-4);
 }

@@ -74,10 +74,16 @@ void check_against_brute_force(const TriMesh& mesh, const NearFaceGrid& grid, st
                 grid.near[k] - 1e-12);
     }
     // The groups partition the list, each nearest first.
-    ASSERT_EQ(grid.group_first[grid.group_start[v]], grid.start[v]);
-    ASSERT_EQ(grid.group_first[grid.group_start[v + 1]], grid.start[v + 1]);
-    for (uint32_t g = grid.group_start[v]; g < grid.group_start[v + 1]; ++g)
-      for (uint32_t k = grid.group_first[g] + 1; k < grid.group_first[g + 1]; ++k) ASSERT_LE(grid.near[k - 1], grid.near[k]);
+    uint32_t next = grid.start[v];
+    for (uint32_t g = grid.group_start[v]; g < grid.group_start[v + 1]; ++g) {
+      const FaceGroup& group = grid.groups[g];
+      ASSERT_EQ(group.first, next);
+      ASSERT_LT(group.first, group.end);
+      ASSERT_EQ(group.near, grid.near[group.first]);
+      for (uint32_t k = group.first + 1; k < group.end; ++k) ASSERT_LE(grid.near[k - 1], grid.near[k]);
+      next = group.end;
+    }
+    ASSERT_EQ(next, grid.start[v + 1]);
     // The faces' box bounds them (the kernel's bound outside the grid).
     const double outside = glm::length(glm::max(glm::max(grid.box_low - q, q - grid.box_high), Vec3(0.0)));
     EXPECT_GE(nearest, outside - 1e-12);
@@ -115,9 +121,9 @@ TEST(NearFaceGrid, GroupsPartitionEachListByLabel) {
     ASSERT_EQ(a, b) << "voxel " << v;
     ASSERT_LE(plain.group_start[v + 1] - plain.group_start[v], 1u);  // one group without labels
     for (uint32_t g = grouped.group_start[v]; g < grouped.group_start[v + 1]; ++g) {
-      if (g > grouped.group_start[v]) ASSERT_LT(grouped.group_label[g - 1], grouped.group_label[g]);
-      for (uint32_t k = grouped.group_first[g]; k < grouped.group_first[g + 1]; ++k)
-        ASSERT_EQ(labels[grouped.faces[k]], grouped.group_label[g]);
+      if (g > grouped.group_start[v]) ASSERT_LT(grouped.groups[g - 1].label, grouped.groups[g].label);
+      for (uint32_t k = grouped.groups[g].first; k < grouped.groups[g].end; ++k)
+        ASSERT_EQ(labels[grouped.faces[k]], grouped.groups[g].label);
     }
     several += grouped.group_start[v + 1] - grouped.group_start[v] > 1;
   }

@@ -78,9 +78,6 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   device_swatch.lambda = static_cast<float>(options.lambda);
   device_swatch.normal_bins = normal_bins_.size();
   kernel_ = std::make_unique<MatchingCost>(device, device_swatch, grid_);
-  groups_.resize(grid_.group_label.size());
-  for (size_t g = 0; g < groups_.size(); ++g)
-    groups_[g] = {grid_.group_first[g], grid_.group_first[g + 1], grid_.group_label[g], grid_.near[grid_.group_first[g]]};
 }
 
 GeometryMatcher::~GeometryMatcher() = default;
@@ -118,8 +115,8 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     // nearest first: once one cannot beat or tie the best, none after it in the group can. Ties
     // go to the lower face index, as in the BVH's search, so that the face found (a hint, and
     // the refinement's correspondence) does not depend on the order of the scan or the hint.
-    const auto scan = [&](const kernels::matching_cost_layout::MatchingGroup& g) {
-      const double factor = factors[g.bin];
+    const auto scan = [&](const FaceGroup& g) {
+      const double factor = factors[g.label];
       for (uint32_t k = g.first; k < g.end; ++k) {
         const double nearest = 1.0 + lambda * grid_.near[k];
         if (nearest * factor > best) break;
@@ -136,13 +133,13 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
     };
     // Each group's bound once; the lists of the groups that may be scanned are fetched before
     // the first scan, which would otherwise wait on each in turn.
-    const kernels::matching_cost_layout::MatchingGroup* groups = groups_.data() + grid_.group_start[voxel];
+    const FaceGroup* groups = grid_.groups.data() + grid_.group_start[voxel];
     const uint32_t count = grid_.group_start[voxel + 1] - grid_.group_start[voxel];
     double bounds[kMaxBins];
     // The most promising group first, so that the others are mostly passed over whole.
     uint32_t lowest = 0;
     for (uint32_t g = 0; g < count; ++g) {
-      bounds[g] = (1.0 + lambda * groups[g].near) * factors[groups[g].bin];
+      bounds[g] = (1.0 + lambda * groups[g].near) * factors[groups[g].label];
       if (bounds[g] <= best) {
         __builtin_prefetch(&grid_.near[groups[g].first]);
         __builtin_prefetch(&grid_.faces[groups[g].first]);

@@ -22,7 +22,6 @@
 
 #include <glm/vec2.hpp>
 
-#include "matching_cost_layout.h"
 #include "mesh/measures.h"
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
@@ -116,10 +115,6 @@ class GeometryMatcher {
   std::unique_ptr<FaceBvh> bvh_;
   NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them
   NearFaceGrid grid_;
-  //! grid_'s groups in one array as the kernel holds them (entries, bin, the first entry's
-  //! `near`, which bounds the group): an exact cost reads them in one pass per voxel, not across
-  //! three arrays.
-  std::vector<kernels::matching_cost_layout::MatchingGroup> groups_;
   //! Normal bins per side of the octahedral map at most, and so groups per voxel at most.
   static constexpr int kMaxBinsPerSide = 6;
   static constexpr size_t kMaxBins = kMaxBinsPerSide * kMaxBinsPerSide;

@@ -316,8 +316,7 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   grid.group_start.assign(count + 1, 0);
   grid.faces.resize(entry_offset.back());
   grid.near.resize(entry_offset.back());
-  grid.group_first.assign(group_offset.back() + 1, 0);
-  grid.group_label.resize(group_offset.back());
+  grid.groups.resize(group_offset.back());
   tbb::parallel_for(size_t{0}, parts.size(), [&](size_t p) {
     Part& part = parts[p];
     const size_t first_voxel = p * static_cast<size_t>(n.x), first_group = group_offset[p];
@@ -329,12 +328,12 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
       grid.start[first_voxel + m + 1] = entries;
       grid.group_start[first_voxel + m + 1] = groups;
     }
-    auto group_end = static_cast<uint32_t>(entry_offset[p]);
+    auto group_first = static_cast<uint32_t>(entry_offset[p]);
     for (size_t g = 0; g < part.group_sizes.size(); ++g) {
-      group_end += part.group_sizes[g];
-      grid.group_first[first_group + g + 1] = group_end;
+      const uint32_t end = group_first + part.group_sizes[g];
+      grid.groups[first_group + g] = {group_first, end, part.group_labels[g], part.near[group_first - entry_offset[p]]};
+      group_first = end;
     }
-    std::copy(part.group_labels.begin(), part.group_labels.end(), grid.group_label.begin() + static_cast<std::ptrdiff_t>(first_group));
     std::copy(part.faces.begin(), part.faces.end(), grid.faces.begin() + static_cast<std::ptrdiff_t>(entry_offset[p]));
     std::copy(part.near.begin(), part.near.end(), grid.near.begin() + static_cast<std::ptrdiff_t>(entry_offset[p]));
     part = Part{};  // released as it is copied

@@ -14,6 +14,15 @@
 
 namespace meshquilt {
 
+//! Entries [first, end) of a voxel's list whose faces share a label, and the first entry's `near`,
+//! which bounds them all: one read decides whether the group can matter.
+struct FaceGroup {
+  uint32_t first;
+  uint32_t end;
+  uint32_t label;
+  float near;
+};
+
 struct NearFaceGrid {
   Vec3 origin{0.0};          //!< lower corner of voxel (0, 0, 0)
   double voxel = 0.0;        //!< voxel edge
@@ -35,11 +44,10 @@ struct NearFaceGrid {
   std::vector<int32_t> nearest_face;
   //! Each voxel's list in groups of faces with one label (`face_groups` of build_near_face_grid;
   //! one group without labels), each group in increasing `near`: voxel v's groups are
-  //! [group_start[v], group_start[v + 1]); group g lists faces [group_first[g], group_first[g + 1])
-  //! of label group_label[g]. A scan then stops per group, and skips groups it can rule out.
+  //! groups[group_start[v], group_start[v + 1]). A scan then stops per group, and skips groups it
+  //! can rule out.
   std::vector<uint32_t> group_start;  //!< #voxels + 1
-  std::vector<uint32_t> group_first;  //!< #groups + 1
-  std::vector<uint32_t> group_label;  //!< #groups
+  std::vector<FaceGroup> groups;
 
   //! The voxel holding q (x fastest), or -1 outside the grid.
   int64_t voxel_of(const Vec3& q) const;
