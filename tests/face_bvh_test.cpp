@@ -305,5 +305,90 @@ TEST(FaceBvh, OverlappingPairsMatchBruteForce) {
   EXPECT_EQ(found, expected);
 }
 
+// A BVH over some faces of a mesh answers as brute force over those faces does, naming the mesh's
+// faces: closest points, least costs with ties to the lowest mesh index (also against a known
+// face of another subset), box queries and overlapping pairs.
+TEST(FaceBvh, SubsetAnswersNameTheMeshFacesAsBruteForceOverTheSubset) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> u(0.0, 4.0), d(-0.4, 0.4);
+  TriMesh mesh;
+  for (int i = 0; i < 600; ++i) {
+    const Vec3 c(u(rng), u(rng), u(rng));
+    const auto base = static_cast<int32_t>(mesh.positions.size());
+    for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + Vec3(d(rng), d(rng), d(rng)));
+    mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  // A fan of equally near coplanar faces straight below (0, 0, 5.5): faces 600-605, listed into
+  // the subset in reverse so that the lowest index is not the first primitive.
+  const auto centre = static_cast<int32_t>(mesh.positions.size());
+  mesh.positions.emplace_back(0.0, 0.0, 5.0);
+  for (int k = 0; k < 6; ++k) mesh.positions.emplace_back(std::cos(k * M_PI / 3.0), std::sin(k * M_PI / 3.0), 5.0);
+  for (int k = 0; k < 6; ++k) mesh.triangles.push_back({centre, centre + 1 + k, centre + 1 + (k + 1) % 6});
+  std::vector<int32_t> subset;
+  for (int32_t f = 605; f >= 0; --f)
+    if (f >= 600 || f % 3 != 0) subset.push_back(f);
+  std::shuffle(subset.begin(), subset.end() - 6, rng);
+  std::vector<uint8_t> in_subset(mesh.num_faces(), 0);
+  for (int32_t f : subset) in_subset[f] = 1;
+  const FaceBvh bvh(mesh, subset);
+
+  const auto distance_to = [&](const Vec3& p, size_t f) {
+    const Tri& t = mesh.triangles[f];
+    return reference_distance(p, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+  };
+  const auto cost = [](const ClosestPoint& c) { return 1.0 + c.distance; };
+  const auto radius = [](double c) { return c - 1.0; };
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    double nearest = std::numeric_limits<double>::infinity();
+    int32_t nearest_face = -1;
+    for (size_t f = 0; f < mesh.num_faces(); ++f)
+      if (in_subset[f] && distance_to(p, f) < nearest) nearest = distance_to(p, f), nearest_face = static_cast<int32_t>(f);
+    const ClosestPoint cp = bvh.closest_point(p);
+    EXPECT_EQ(cp.face, nearest_face);
+    EXPECT_NEAR(cp.distance, nearest, 1e-12);
+    double best = 0.0;
+    EXPECT_EQ(bvh.min_cost_face(p, cost, radius, &best).face, nearest_face);
+    EXPECT_NEAR(best, 1.0 + nearest, 1e-12);
+    std::vector<int32_t> found, expected;
+    const Vec3 lo = p - Vec3(0.3), hi = p + Vec3(0.3);
+    bvh.faces_in_box(lo, hi, found);
+    for (size_t f = 0; f < mesh.num_faces(); ++f) {
+      if (!in_subset[f]) continue;
+      Vec3 flo(1e300), fhi(-1e300);
+      for (int32_t v : mesh.triangles[f]) flo = glm::min(flo, mesh.positions[v]), fhi = glm::max(fhi, mesh.positions[v]);
+      if (flo.x <= hi.x && lo.x <= fhi.x && flo.y <= hi.y && lo.y <= fhi.y && flo.z <= hi.z && lo.z <= fhi.z)
+        expected.push_back(static_cast<int32_t>(f));
+    }
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected);
+  }
+  const Vec3 above(0.0, 0.0, 5.5);
+  double best = 0.0;
+  EXPECT_EQ(bvh.min_cost_face(above, cost, radius, &best).face, 600);
+  EXPECT_EQ(best, 1.5);
+  // Known at face 603 (or at a face outside the subset with a higher index): 600 ties lower.
+  EXPECT_EQ(bvh.min_cost_face(above, cost, radius, &best, 1.5, {}, 603).face, 600);
+  EXPECT_EQ(bvh.min_cost_face(above, cost, radius, &best, 1.5, {}, 700).face, 600);
+  EXPECT_EQ(bvh.min_cost_face(above, cost, radius, &best, 1.5, {}, 599).face, -1);
+
+  std::mutex m;
+  std::vector<std::pair<int32_t, int32_t>> pairs, expected_pairs;
+  bvh.for_each_overlapping_pair([&](int32_t f, int32_t g) {
+    std::lock_guard<std::mutex> lock(m);
+    pairs.emplace_back(f, g);
+  });
+  std::sort(pairs.begin(), pairs.end());
+  const FaceBvh whole(mesh);
+  whole.for_each_overlapping_pair([&](int32_t f, int32_t g) {
+    std::lock_guard<std::mutex> lock(m);
+    if (in_subset[f] && in_subset[g]) expected_pairs.emplace_back(f, g);
+  });
+  std::sort(expected_pairs.begin(), expected_pairs.end());
+  EXPECT_GT(expected_pairs.size(), 10u);
+  EXPECT_EQ(pairs, expected_pairs);
+  EXPECT_THROW(FaceBvh(mesh, std::vector<int32_t>{606}), std::out_of_range);
+}
+
 }  // namespace
 }  // namespace meshquilt

@@ -36,7 +36,6 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   double largest = 0.0;
   for (const Vec3& p : swatch.positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   rounding_ = 1e-12 * largest;
-  bvh_ = std::make_unique<FaceBvh>(swatch_);
   // Voxels of 3/4 of a mean edge (1 past 8,192 faces; coarser past 2^18 voxels) listing the faces
   // within 1.5 mean edges past the voxel's diagonal: with the drivers' lambda = 1 / mean edge,
   // the cap 1 + lambda * reach then exceeds what most points cost even where the normals
@@ -66,6 +65,9 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? kMaxBinsPerSide : 3);
   grid_ = build_near_face_grid(swatch, voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
                                int64_t{1} << 18, normal_bins_.bin_of);
+  std::vector<std::vector<int32_t>> bin_faces(normal_bins_.size());
+  for (size_t f = 0; f < normal_bins_.bin_of.size(); ++f) bin_faces[normal_bins_.bin_of[f]].push_back(static_cast<int32_t>(f));
+  for (std::vector<int32_t>& faces : bin_faces) bin_bvhs_.push_back(std::make_unique<FaceBvh>(swatch_, std::move(faces)));
 
   MatchingSwatch device_swatch;
   device_swatch.positions.reserve(swatch.num_vertices());
@@ -161,13 +163,26 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
       }
     }
   }
-  // D >= 1 + lambda * Dist, so no face farther than (D_best - 1) / lambda can win; within that,
-  // a face's normal term and its bounding sphere rule most out without a closest point (far
-  // from the swatch, the normal term widens the search to many faces facing away).
-  const ClosestPoint found = bvh_->min_cost_face(
-      q, [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); },
-      [&](double d) { return (d - 1.0) / lambda; }, &best, best, face_bound, face);
-  if (found.face >= 0) face = found.face;
+  // A face of a bin costs at least (1 + lambda * Dist) x the bin's factor, so no face of it
+  // farther than (D_best / factor - 1) / lambda can win, and a bin whose factor exceeds the best
+  // holds none that can win or tie. Bins are searched in increasing factor (the best falls
+  // fastest), each from the best so far; within a search, a face's normal term and bounding
+  // sphere rule most out without a closest point. The answer is that of one search over every
+  // face: the least cost, ties to the lower index (a later bin's face wins a tie only when lower).
+  // Against one BVH over every face: the Apple row's matching 9.3 -> 8.9 s (a quarter fewer faces
+  // bounded), the default job's 1.76 -> 1.70 s; the fruit's 9 bins made 36 took it to 11.7 s.
+  const size_t bins = bin_bvhs_.size();
+  uint32_t order[kMaxBins];
+  for (uint32_t b = 0; b < bins; ++b) order[b] = b;
+  std::sort(order, order + bins, [&](uint32_t a, uint32_t b) { return factors[a] < factors[b] || (factors[a] == factors[b] && a < b); });
+  const auto cost = [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); };
+  for (size_t k = 0; k < bins; ++k) {
+    const double factor = factors[order[k]];
+    if (factor > best) break;
+    const ClosestPoint found = bin_bvhs_[order[k]]->min_cost_face(
+        q, cost, [&](double d) { return std::max((d / factor - 1.0) / lambda, 0.0); }, &best, best, face_bound, face);
+    if (found.face >= 0) face = found.face;
+  }
   return best;
 }
 

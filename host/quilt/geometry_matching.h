@@ -112,8 +112,10 @@ class GeometryMatcher {
   double rounding_;
   std::vector<FaceSphere> face_spheres_;  //!< a quick lower bound of Dist
   std::vector<FacePlane> face_planes_;    //!< Eq. 1's normals; where planar, another bound of Dist
-  std::unique_ptr<FaceBvh> bvh_;
   NormalBins normal_bins_;  //!< of the swatch's faces; grid_ groups its lists by them
+  //! Per normal bin, a BVH over its faces: a search far from the swatch passes over bins facing
+  //! away and searches the others within the radius their normal bound allows.
+  std::vector<std::unique_ptr<FaceBvh>> bin_bvhs_;
   NearFaceGrid grid_;
   //! Normal bins per side of the octahedral map at most, and so groups per voxel at most.
   static constexpr int kMaxBinsPerSide = 6;

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "error.h"
@@ -50,6 +51,7 @@ bool boxes_overlap(const Box& a, const Box& b) {
 // State of one point query; Embree hands it back to the callback through userPtr.
 struct QueryState {
   const TriMesh* mesh = nullptr;
+  const int32_t* faces_of = nullptr;  // the mesh face of each primitive; null: the primitive's index
   Vec3 p{0.0};
   double slack = 0.0;  // absolute padding for float rounding of the query point and boxes
   // Closest point / min cost queries.
@@ -77,9 +79,13 @@ ClosestPoint closest_on_face(const TriMesh& mesh, int32_t f, const Vec3& p) {
   return cp;
 }
 
+int32_t face_of(const int32_t* faces_of, unsigned primitive) {
+  return faces_of ? faces_of[primitive] : static_cast<int32_t>(primitive);
+}
+
 bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<QueryState*>(args->userPtr);
-  const auto f = static_cast<int32_t>(args->primID);
+  const int32_t f = face_of(q->faces_of, args->primID);
   const ClosestPoint cp = closest_on_face(*q->mesh, f, q->p);
   if (cp.distance > q->max_distance) return false;
   // Ties go to the lower face index so results do not depend on traversal order.
@@ -96,7 +102,7 @@ bool closest_point_callback(RTCPointQueryFunctionArguments* args) {
 
 bool min_cost_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<QueryState*>(args->userPtr);
-  const auto f = static_cast<int32_t>(args->primID);
+  const int32_t f = face_of(q->faces_of, args->primID);
   if (*q->face_bound && (*q->face_bound)(f) > q->best_cost) return false;  // cannot beat or tie it
   const ClosestPoint cp = closest_on_face(*q->mesh, f, q->p);
   const double c = (*q->cost)(cp);
@@ -114,8 +120,7 @@ bool min_cost_callback(RTCPointQueryFunctionArguments* args) {
 
 bool box_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<QueryState*>(args->userPtr);
-  const auto f = static_cast<int32_t>(args->primID);
-  if (boxes_overlap((*q->boxes)[f], q->box)) q->faces->push_back(f);
+  if (boxes_overlap((*q->boxes)[args->primID], q->box)) q->faces->push_back(face_of(q->faces_of, args->primID));
   return false;
 }
 
@@ -136,6 +141,7 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
 struct RayState {
   RTCIntersectContext context;
   const TriMesh* mesh = nullptr;
+  const int32_t* faces_of = nullptr;
   Vec3 origin{0.0}, direction{0.0};
   double max_distance = std::numeric_limits<double>::infinity();
   double slack = 0.0;  // ray parameter padding for float rounding of the ray and the boxes
@@ -146,7 +152,7 @@ struct RayState {
 // hit plus slack (a face at the same t with a lower index must still be visited).
 void ray_intersect_callback(const RTCIntersectFunctionNArguments* args) {
   auto* q = reinterpret_cast<RayState*>(args->context);
-  const auto f = static_cast<int32_t>(args->primID);
+  const int32_t f = face_of(q->faces_of, args->primID);
   const Tri& t = q->mesh->triangles[f];
   const double distance = ray_triangle(q->origin, q->direction, q->mesh->positions[t[0]],
                                       q->mesh->positions[t[1]], q->mesh->positions[t[2]]);
@@ -167,7 +173,10 @@ void unused_occluded(const RTCOccludedFunctionNArguments*) {}
 }  // namespace
 
 struct FaceBvh::Impl {
-  std::vector<Box> boxes;  // per face, double precision
+  bool subset = false;         // false: every face of the mesh, in order
+  std::vector<int32_t> faces;  // with a subset, the mesh face of each primitive
+  const int32_t* faces_of() const { return subset ? faces.data() : nullptr; }
+  std::vector<Box> boxes;  // per primitive, double precision
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   double slack = 0.0;
@@ -223,7 +232,20 @@ double ray_triangle(const Vec3& origin, const Vec3& direction, const Vec3& a, co
   return t > 0.0 ? t : kMiss;
 }
 
-FaceBvh::FaceBvh(const TriMesh& mesh, BvhQuality quality) : mesh_(mesh), impl_(std::make_unique<Impl>()) {
+FaceBvh::FaceBvh(const TriMesh& mesh, BvhQuality quality) : FaceBvh(mesh, {}, false, quality) {}
+
+FaceBvh::FaceBvh(const TriMesh& mesh, std::vector<int32_t> faces, BvhQuality quality)
+    : FaceBvh(mesh, std::move(faces), true, quality) {}
+
+FaceBvh::FaceBvh(const TriMesh& mesh, std::vector<int32_t> faces, bool subset, BvhQuality quality)
+    : mesh_(mesh), impl_(std::make_unique<Impl>()) {
+  for (const int32_t f : faces) {
+    if (f < 0 || static_cast<size_t>(f) >= mesh.num_faces())
+      throw std::out_of_range("FaceBvh: face " + std::to_string(f) + " outside [0, " + std::to_string(mesh.num_faces()) + ")");
+  }
+  impl_->faces = std::move(faces);
+  impl_->subset = subset;
+  primitives_ = subset ? impl_->faces.size() : mesh.num_faces();
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) {
     throw DeviceError("Embree: cannot create a device (" + std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
@@ -240,9 +262,10 @@ FaceBvh::FaceBvh(const TriMesh& mesh, BvhQuality quality) : mesh_(mesh), impl_(s
   impl_->scene = rtcNewScene(impl_->device);
   rtcSetSceneBuildQuality(impl_->scene, quality == BvhQuality::low ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM);
   RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_USER);
-  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(mesh.num_faces()));
-  impl_->boxes.resize(mesh.num_faces());
-  for (size_t f = 0; f < mesh.num_faces(); ++f) impl_->boxes[f] = face_box(mesh, static_cast<int32_t>(f));
+  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(primitives_));
+  impl_->boxes.resize(primitives_);
+  for (size_t k = 0; k < primitives_; ++k)
+    impl_->boxes[k] = face_box(mesh, face_of(impl_->faces_of(), static_cast<unsigned>(k)));
   rtcSetGeometryUserData(geometry, &impl_->boxes);
   rtcSetGeometryBoundsFunction(geometry, &bounds_callback, nullptr);
   rtcSetGeometryIntersectFunction(geometry, &ray_intersect_callback);
@@ -259,10 +282,11 @@ FaceBvh::~FaceBvh() = default;
 ClosestPoint FaceBvh::closest_point(const Vec3& p, double max_distance) const {
   QueryState q;
   q.mesh = &mesh_;
+  q.faces_of = impl_->faces_of();
   q.p = p;
   q.max_distance = max_distance;
   q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
-  if (mesh_.num_faces() == 0) return q.best;
+  if (primitives_ == 0) return q.best;
   RTCPointQuery query;
   query.x = static_cast<float>(p.x);
   query.y = static_cast<float>(p.y);
@@ -282,6 +306,7 @@ ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(co
                                     const std::function<double(int32_t)>& face_bound, int32_t known_face) const {
   QueryState q;
   q.mesh = &mesh_;
+  q.faces_of = impl_->faces_of();
   q.p = p;
   q.cost = &cost;
   q.radius_for = &radius_for;
@@ -289,7 +314,7 @@ ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(co
   q.best_cost = known_cost;
   q.best.face = known_face;  // a tie goes to a lower index only
   q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
-  if (mesh_.num_faces() > 0) {
+  if (primitives_ > 0) {
     RTCPointQuery query;
     query.x = static_cast<float>(p.x);
     query.y = static_cast<float>(p.y);
@@ -310,10 +335,11 @@ RayHit FaceBvh::ray_cast(const Vec3& origin, const Vec3& direction, double max_d
   RayState q;
   rtcInitIntersectContext(&q.context);
   q.mesh = &mesh_;
+  q.faces_of = impl_->faces_of();
   q.origin = origin;
   q.direction = direction;
   q.max_distance = max_distance;
-  if (mesh_.num_faces() == 0) return q.best;
+  if (primitives_ == 0) return q.best;
   // Rounding the ray to float moves it by about kRelativeSlack x (|origin| + t |direction|);
   // the slack, in units of t, covers that for every t up to the scene's size.
   const double length = glm::length(direction);
@@ -341,9 +367,10 @@ RayHit FaceBvh::ray_cast(const Vec3& origin, const Vec3& direction, double max_d
 }
 
 void FaceBvh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>& faces) const {
-  if (mesh_.num_faces() == 0 || lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return;
+  if (primitives_ == 0 || lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return;
   QueryState q;
   q.mesh = &mesh_;
+  q.faces_of = impl_->faces_of();
   q.box = {lo, hi};
   q.boxes = &impl_->boxes;
   q.faces = &faces;
@@ -366,24 +393,25 @@ void FaceBvh::faces_in_box(const Vec3& lo, const Vec3& hi, std::vector<int32_t>&
 namespace {
 struct CollideState {
   const std::vector<Box>* boxes;
+  const int32_t* faces_of;
   const std::function<void(int32_t, int32_t)>* visit;
 };
 
 void collide_callback(void* user, RTCCollision* collisions, unsigned count) {
   const auto* s = static_cast<const CollideState*>(user);
   for (unsigned i = 0; i < count; ++i) {
-    const auto f = static_cast<int32_t>(collisions[i].primID0);
-    const auto g = static_cast<int32_t>(collisions[i].primID1);
+    const unsigned a = collisions[i].primID0, b = collisions[i].primID1;
+    const int32_t f = face_of(s->faces_of, a), g = face_of(s->faces_of, b);
     // Embree reports each unordered leaf-level candidate in both orders; keep one and test the
     // exact double boxes.
-    if (f < g && boxes_overlap((*s->boxes)[f], (*s->boxes)[g])) (*s->visit)(f, g);
+    if (f < g && boxes_overlap((*s->boxes)[a], (*s->boxes)[b])) (*s->visit)(f, g);
   }
 }
 }  // namespace
 
 void FaceBvh::for_each_overlapping_pair(const std::function<void(int32_t, int32_t)>& visit) const {
-  if (mesh_.num_faces() < 2) return;
-  CollideState state{&impl_->boxes, &visit};
+  if (primitives_ < 2) return;
+  CollideState state{&impl_->boxes, impl_->faces_of(), &visit};
   rtcCollide(impl_->scene, impl_->scene, &collide_callback, &state);
   impl_->check("collision");
 }

@@ -39,6 +39,10 @@ enum class BvhQuality { low, medium };
 class FaceBvh {
  public:
   explicit FaceBvh(const TriMesh& mesh, BvhQuality quality = BvhQuality::medium);
+  //! A BVH over the listed faces of `mesh` only; answers name faces of `mesh`, and ties still go
+  //! to the lower face index of `mesh`.
+  //! \throw std::out_of_range for a face outside the mesh.
+  FaceBvh(const TriMesh& mesh, std::vector<int32_t> faces, BvhQuality quality = BvhQuality::medium);
   ~FaceBvh();
   FaceBvh(const FaceBvh&) = delete;
   FaceBvh& operator=(const FaceBvh&) = delete;
@@ -85,8 +89,10 @@ class FaceBvh {
   const TriMesh& mesh() const { return mesh_; }
 
  private:
+  FaceBvh(const TriMesh& mesh, std::vector<int32_t> faces, bool subset, BvhQuality quality);
   struct Impl;
   const TriMesh& mesh_;
+  size_t primitives_ = 0;  // faces in the BVH
   std::unique_ptr<Impl> impl_;
 };
 
