@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -175,12 +176,14 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   uint32_t order[kMaxBins];
   for (uint32_t b = 0; b < bins; ++b) order[b] = b;
   std::sort(order, order + bins, [&](uint32_t a, uint32_t b) { return factors[a] < factors[b] || (factors[a] == factors[b] && a < b); });
-  const auto cost = [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); };
+  double factor = 1.0;  // of the bin searched
+  const std::function<double(const ClosestPoint&)> cost = [&](const ClosestPoint& cp) { return face_cost(cp.face, cp.distance); };
+  const std::function<double(double)> radius = [&](double d) { return std::max((d / factor - 1.0) / lambda, 0.0); };
+  const std::function<double(int32_t)> bound = face_bound;
   for (size_t k = 0; k < bins; ++k) {
-    const double factor = factors[order[k]];
+    factor = factors[order[k]];
     if (factor > best) break;
-    const ClosestPoint found = bin_bvhs_[order[k]]->min_cost_face(
-        q, cost, [&](double d) { return std::max((d / factor - 1.0) / lambda, 0.0); }, &best, best, face_bound, face);
+    const ClosestPoint found = bin_bvhs_[order[k]]->min_cost_face(q, cost, radius, &best, best, bound, face);
     if (found.face >= 0) face = found.face;
   }
   return best;

@@ -173,9 +173,8 @@ void unused_occluded(const RTCOccludedFunctionNArguments*) {}
 }  // namespace
 
 struct FaceBvh::Impl {
-  bool subset = false;         // false: every face of the mesh, in order
-  std::vector<int32_t> faces;  // with a subset, the mesh face of each primitive
-  const int32_t* faces_of() const { return subset ? faces.data() : nullptr; }
+  std::vector<int32_t> faces;  // of a subset, the mesh face of each primitive; empty: face k is primitive k
+  const int32_t* faces_of() const { return faces.empty() ? nullptr : faces.data(); }
   std::vector<Box> boxes;  // per primitive, double precision
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -243,9 +242,8 @@ FaceBvh::FaceBvh(const TriMesh& mesh, std::vector<int32_t> faces, bool subset, B
     if (f < 0 || static_cast<size_t>(f) >= mesh.num_faces())
       throw std::out_of_range("FaceBvh: face " + std::to_string(f) + " outside [0, " + std::to_string(mesh.num_faces()) + ")");
   }
+  primitives_ = subset ? faces.size() : mesh.num_faces();
   impl_->faces = std::move(faces);
-  impl_->subset = subset;
-  primitives_ = subset ? impl_->faces.size() : mesh.num_faces();
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) {
     throw DeviceError("Embree: cannot create a device (" + std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
