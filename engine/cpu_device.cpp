@@ -1,5 +1,7 @@
 #include "cpu_device.h"
 
+#include <sys/mman.h>
+
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
@@ -20,18 +22,34 @@ namespace {
 class CpuBuffer final : public Buffer {
  public:
   explicit CpuBuffer(std::size_t bytes) : size_(bytes) {
+    // A large buffer is written whole as soon as it exists (an upload): its pages are mapped in
+    // one call rather than one fault each, which on a virtual machine costs microseconds apiece
+    // (the built-in chain mail's grid upload: 44 -> 26 ms).
+    if (bytes >= kMappedBytes) {
+      void* mapped = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_POPULATE, -1, 0);
+      if (mapped != MAP_FAILED) {
+        data_ = mapped;
+        mapped_ = true;
+        return;
+      }
+    }
     // Round up so aligned_alloc accepts the size and a zero-byte buffer still has a pointer.
     const std::size_t rounded = std::max<std::size_t>(16, (bytes + 15) / 16 * 16);
     data_ = std::aligned_alloc(16, rounded);
     if (!data_) throw DeviceError("cpu back end: cannot allocate a buffer of " + std::to_string(bytes) + " bytes");
   }
-  ~CpuBuffer() override { std::free(data_); }
+  ~CpuBuffer() override {
+    if (mapped_) ::munmap(data_, size_);
+    else std::free(data_);
+  }
   std::size_t size() const override { return size_; }
   void* data() override { return data_; }
 
  private:
+  static constexpr std::size_t kMappedBytes = std::size_t{1} << 20;
   std::size_t size_;
-  void* data_;
+  void* data_ = nullptr;
+  bool mapped_ = false;
 };
 
 class CpuKernel final : public Kernel {

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "mesh/measures.h"
+#include "mesh/populate_pages.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {
@@ -314,9 +315,9 @@ NearFaceGrid build_near_face_grid(const TriMesh& mesh, double voxel, double marg
   }
   grid.start.assign(count + 1, 0);
   grid.group_start.assign(count + 1, 0);
-  grid.faces.resize(entry_offset.back());
-  grid.near.resize(entry_offset.back());
-  grid.groups.resize(group_offset.back());
+  resize_populated(grid.faces, entry_offset.back());
+  resize_populated(grid.near, entry_offset.back());
+  resize_populated(grid.groups, group_offset.back());
   tbb::parallel_for(size_t{0}, parts.size(), [&](size_t p) {
     Part& part = parts[p];
     const size_t first_voxel = p * static_cast<size_t>(n.x), first_group = group_offset[p];
