@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -20,6 +21,7 @@
 
 #include "batch_progress.h"
 #include "batch_records.h"
+#include "cache_folder.h"
 #include "error.h"
 #include "signals.h"
 
@@ -94,10 +96,14 @@ class Runner {
     threads_ = options.threads > 0 ? options.threads : std::max<int>(1, static_cast<int>(cpus_.size()) / jobs);
     free_slots_.resize(static_cast<size_t>(jobs));
     for (size_t s = 0; s < free_slots_.size(); ++s) free_slots_[s] = free_slots_.size() - 1 - s;
-    // The environment of every child: ours, with lavapipe's thread count set to the job's CPUs.
+    // The environment of every child: ours, with lavapipe's thread count set to the job's CPUs
+    // and the grid cache named absolutely (a job runs in its own folder), so that all share it.
     for (char** variable = environ; *variable; ++variable)
-      if (std::strncmp(*variable, "LP_NUM_THREADS=", 15) != 0) environment_.push_back(*variable);
+      if (std::strncmp(*variable, "LP_NUM_THREADS=", 15) != 0 && std::strncmp(*variable, "MESHQUILT_CACHE=", 16) != 0)
+        environment_.push_back(*variable);
     environment_.push_back("LP_NUM_THREADS=" + std::to_string(threads_));
+    const std::filesystem::path grids = cache_folder();
+    environment_.push_back("MESHQUILT_CACHE=" + (grids.empty() ? std::string("off") : std::filesystem::absolute(grids).string()));
   }
 
   // Starts `job` unless it is done or locked; returns whether it is now running.

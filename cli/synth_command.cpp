@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.h"
+#include "cache_folder.h"
 #include "commands.h"
 #include "device.h"
 #include "error.h"
@@ -81,6 +82,7 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
       {"hole_cells", stats.hole_cells},
       {"largest_hole_area", stats.largest_hole_area},
       {"stages", stats.stage_seconds},
+      {"grid", to_string(stats.grid_source)},
   };
 }
 
@@ -142,6 +144,7 @@ void run_synth(const SynthArgs& args) {
   common.cells_across_swatch = args.cells;
   common.max_patches = args.max_patches;
   common.cleanup = args.cleanup;
+  common.matching.grid_folder = cache_folder();
   common.cancel = &interrupt_token();
   common.progress = [&](const QuiltProgress& p) {
     check_interrupted();  // stops after the current patch until the scheduler polls options.cancel

@@ -3,8 +3,11 @@
 // and the same choice on both back ends.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <random>
 
@@ -316,6 +319,46 @@ TEST(GeometryMatching, PrunedSearchChoosesWhatTheFullSearchChoosesOnChainMail) {
   options.columns = 6;
   const TriMesh swatch = make_chainmail(options);
   expect_pruning_changes_nothing(swatch, 0.3, 5, 4);
+}
+
+// A matcher whose grid was read from a folder, one that wrote it there and one that built it
+// alone choose alike (translation, cost, random draw).
+TEST(GeometryMatching, AGridReadFromAFolderChoosesWhatABuiltOneChooses) {
+  ChainmailOptions chain = ChainmailOptions::small();
+  chain.rows = 4;
+  chain.columns = 6;
+  const TriMesh swatch = make_chainmail(chain);
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("meshquilt_matching_grids_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(folder);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  MatchingOptions options;
+  options.lambda = 1.0 / mean_edge_length(swatch);
+  MatchingOptions cached = options;
+  cached.grid_folder = folder;
+  const GeometryMatcher built(*device, swatch, 0.3, options), writer(*device, swatch, 0.3, cached),
+      reader(*device, swatch, 0.3, cached);
+  EXPECT_EQ(built.grid_source(), GridSource::built);
+  EXPECT_EQ(writer.grid_source(), GridSource::written);
+  EXPECT_EQ(reader.grid_source(), GridSource::read);
+  std::mt19937_64 rng(8);
+  for (int trial = 0; trial < 4; ++trial) {
+    std::vector<Vec3> points, normals;
+    layered_points(swatch, rng, trial % 2 == 1, &points, &normals);
+    const std::vector<glm::dvec2> candidates = grid_candidates(0.3);
+    std::mt19937_64 a(trial), b(trial), c(trial);
+    const MatchResult x = built.match(points, normals, candidates, a);
+    const MatchResult y = writer.match(points, normals, candidates, b);
+    const MatchResult z = reader.match(points, normals, candidates, c);
+    EXPECT_EQ(x.translation, z.translation) << "trial " << trial;
+    EXPECT_EQ(x.cost, z.cost) << "trial " << trial;
+    EXPECT_EQ(x.rescored, z.rescored) << "trial " << trial;
+    EXPECT_EQ(y.translation, z.translation) << "trial " << trial;
+    const uint64_t next = c();
+    EXPECT_EQ(a(), next) << "trial " << trial;
+    EXPECT_EQ(b(), next) << "trial " << trial;
+  }
+  std::filesystem::remove_all(folder);
 }
 
 TEST(GeometryMatching, LinesUpAPeriodicSwatchOffTheGrid) {

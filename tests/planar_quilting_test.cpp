@@ -285,5 +285,32 @@ TEST(SynthCli, ProgressAsJsonLines) {
   EXPECT_NE(test::read_file(dir / "o.obj").find("g element_0"), std::string::npos);
 }
 
+// The nearest-face grid is written to $MESHQUILT_CACHE by the first job and read by the next:
+// the stats say so, and the outputs are the same file as with no cache.
+TEST(SynthCli, AGridKeptInTheCacheGivesTheSameOutput) {
+  const auto dir = test::scratch_dir("grid_cache");
+  const auto swatch = dir / "chain.ply";
+  ASSERT_EQ(test::run_cli("swatch chainmail --preset small -o '" + swatch.string() + "'").exit_code, 0);
+  const char* before = std::getenv("MESHQUILT_CACHE");
+  const std::string saved = before ? before : "";
+  std::string files[3];
+  const char* caches[3] = {"cache", "cache", "off"};
+  const char* sources[3] = {"written", "read", "built"};
+  for (int k = 0; k < 3; ++k) {
+    ::setenv("MESHQUILT_CACHE", k < 2 ? (dir / caches[k]).c_str() : caches[k], 1);
+    const auto out = dir / ("out" + std::to_string(k) + ".ply");
+    const auto stats = dir / ("stats" + std::to_string(k) + ".json");
+    const test::CliResult r = test::run_cli("synth --swatch '" + swatch.string() + "' --plane 1x1 --seed 3 --progress none --backend cpu --stats '" +
+                                            stats.string() + "' -o '" + out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    files[k] = test::read_file(out);
+    EXPECT_NE(test::read_file(stats).find(std::string("\"grid\": \"") + sources[k] + "\""), std::string::npos)
+        << test::read_file(stats);
+  }
+  if (before) ::setenv("MESHQUILT_CACHE", saved.c_str(), 1); else ::unsetenv("MESHQUILT_CACHE");
+  EXPECT_GT(files[0].size(), 1000u);
+  EXPECT_TRUE(files[0] == files[1] && files[1] == files[2]) << "a grid from the cache changed the output";
+}
+
 }  // namespace
 }  // namespace meshquilt

@@ -60,6 +60,11 @@ bool write_all(int fd, const char* data, size_t size) {
 }  // namespace
 
 void write_file_atomic(const std::filesystem::path& file, std::string_view content, const CancelToken* cancel) {
+  write_file_atomic(file, std::span<const std::string_view>(&content, 1), cancel);
+}
+
+void write_file_atomic(const std::filesystem::path& file, std::span<const std::string_view> pieces,
+                       const CancelToken* cancel) {
   const std::string name = file.string();
   static std::atomic<uint64_t> counter{0};
   const std::filesystem::path directory = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
@@ -89,11 +94,12 @@ void write_file_atomic(const std::filesystem::path& file, std::string_view conte
     }
   };
   constexpr size_t kChunk = size_t{4} << 20;
-  for (size_t offset = 0; offset < content.size(); offset += kChunk) {
-    poll();
-    const size_t n = std::min(kChunk, content.size() - offset);
-    if (!write_all(fd, content.data() + offset, n)) fail("write failed");
-  }
+  for (std::string_view content : pieces)
+    for (size_t offset = 0; offset < content.size(); offset += kChunk) {
+      poll();
+      const size_t n = std::min(kChunk, content.size() - offset);
+      if (!write_all(fd, content.data() + offset, n)) fail("write failed");
+    }
   // The data must be on disk before the rename makes it the file: otherwise a power loss after
   // the rename can leave an empty or partial file under the final name.
   if (::fsync(fd) != 0) fail("fsync failed");

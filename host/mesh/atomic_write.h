@@ -4,6 +4,7 @@
 //! file or the complete new one.
 
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 namespace meshquilt {
@@ -17,6 +18,9 @@ class CancelToken;
 //! \throw IoError(write_failed) "FILE: problem" on any failure (the temporary file is removed
 //!        first); Cancelled when `cancel` fires (the temporary file is removed, `file` untouched).
 void write_file_atomic(const std::filesystem::path& file, std::string_view content,
+                       const CancelToken* cancel = nullptr);
+//! The same, with the content given as pieces written one after another.
+void write_file_atomic(const std::filesystem::path& file, std::span<const std::string_view> pieces,
                        const CancelToken* cancel = nullptr);
 
 //! Unlinks every temporary file write_file_atomic is writing now. Async-signal-safe: meant for

@@ -64,8 +64,9 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   normals.reserve(face_planes_.size());
   for (const FacePlane& plane : face_planes_) normals.push_back(plane.normal);
   normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? kMaxBinsPerSide : 3);
-  grid_ = build_near_face_grid(swatch, voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list,
-                               int64_t{1} << 18, normal_bins_.bin_of);
+  const NearFaceGridRequest request{voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list, int64_t{1} << 18,
+                                    normal_bins_.bin_of};
+  grid_ = cached_near_face_grid(options.grid_folder, swatch, request, &grid_source_);
   std::vector<std::vector<int32_t>> bin_faces(normal_bins_.size());
   for (size_t f = 0; f < normal_bins_.bin_of.size(); ++f) bin_faces[normal_bins_.bin_of[f]].push_back(static_cast<int32_t>(f));
   for (std::vector<int32_t>& faces : bin_faces) bin_bvhs_.push_back(std::make_unique<FaceBvh>(swatch_, std::move(faces)));

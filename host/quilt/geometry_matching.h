@@ -15,6 +15,7 @@
 //! candidate exactly (`prune = false`, the reference). Exact costs use the same nearest-face
 //! lists, falling back to the Embree BVH where a list cannot decide.
 
+#include <filesystem>
 #include <memory>
 #include <random>
 #include <utility>
@@ -25,6 +26,7 @@
 #include "mesh/measures.h"
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
+#include "spatial/near_face_grid_cache.h"
 #include "spatial/normal_bins.h"
 
 namespace meshquilt {
@@ -45,6 +47,9 @@ struct MatchingOptions {
   //! A pruned evaluation may stop between blocks of max(this, a 32nd of the points); the choice
   //! does not depend on it.
   int abandon_block = 256;
+  //! Where nearest-face grids are kept between jobs (spatial/near_face_grid_cache.h); empty:
+  //! built for every matcher. The answers are the same either way.
+  std::filesystem::path grid_folder;
 };
 
 struct MatchResult {
@@ -78,6 +83,9 @@ class GeometryMatcher {
   //! Neither the cost nor the faces depend on the hints (or on how the search is accelerated).
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                     const glm::dvec2& translation, std::vector<int32_t>& faces) const;
+
+  //! Whether the nearest-face grid was built, read from grid_folder or written there.
+  GridSource grid_source() const { return grid_source_; }
 
  private:
   //! The public exact_cost with `faces`, given `factors` = normal_factors(normals).
@@ -117,6 +125,7 @@ class GeometryMatcher {
   //! away and searches the others within the radius their normal bound allows.
   std::vector<std::unique_ptr<FaceBvh>> bin_bvhs_;
   NearFaceGrid grid_;
+  GridSource grid_source_ = GridSource::built;
   //! Normal bins per side of the octahedral map at most, and so groups per voxel at most.
   static constexpr int kMaxBinsPerSide = 6;
   static constexpr size_t kMaxBins = kMaxBinsPerSide * kMaxBinsPerSide;

@@ -64,6 +64,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   step.correspondence.lambda = options.lambda / swatch.mean_edge;
   // The matcher's nearest-face grid, BVH and device buffers.
   const GeometryMatcher matcher = timed(seconds, "index", [&] { return GeometryMatcher(device, swatch.mesh, cell, matching); });
+  stats.grid_source = matcher.grid_source();
 
   SeedFinder seeds(grid.nx, grid.ny);
   HoleTracker holes(seeds, options.seed_attempts);

@@ -55,6 +55,7 @@ struct QuiltStats {
   double largest_hole_area = 0.0; //!< area of the largest hole (plane units, or base units for surfaces)
   glm::dvec2 plane_extent{0.0};   //!< planar synthesis: the plane covered is [0, plane_extent] in x-y
   std::map<std::string, double> stage_seconds;  //!< seed, match, correspondence, deform, merge, cleanup
+  GridSource grid_source = GridSource::built;    //!< the matcher's nearest-face grid
 };
 
 }  // namespace meshquilt

@@ -108,6 +108,7 @@ SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh
   step.correspondence.lambda = options.lambda / swatch.mean_edge;
   // The matcher's nearest-face grid, BVH and device buffers.
   const GeometryMatcher matcher = timed(seconds, "index", [&] { return GeometryMatcher(device, swatch.mesh, cell, matching); });
+  stats.grid_source = matcher.grid_source();
 
   SurfaceCells cells;
   {
