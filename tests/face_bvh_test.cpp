@@ -308,6 +308,41 @@ TEST(FaceBvh, OverlappingPairsMatchBruteForce) {
 // A BVH over some faces of a mesh answers as brute force over those faces does, naming the mesh's
 // faces: closest points, least costs with ties to the lowest mesh index (also against a known
 // face of another subset), box queries and overlapping pairs.
+// A search with an offset answers as a BVH of the moved copy does: the same face, closest point
+// and cost, bit for bit, ties included (a fan of equally near faces around one query).
+TEST(FaceBvh, AnOffsetSearchAnswersAsTheMovedCopysBvh) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(0.0, 4.0), d(-0.4, 0.4);
+  TriMesh mesh;
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 c(u(rng), u(rng), u(rng));
+    const auto base = static_cast<int32_t>(mesh.positions.size());
+    for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + Vec3(d(rng), d(rng), d(rng)));
+    mesh.triangles.push_back({base, base + 1, base + 2});
+  }
+  const auto centre = static_cast<int32_t>(mesh.positions.size());
+  mesh.positions.emplace_back(0.0, 0.0, 5.0);
+  for (int k = 0; k < 6; ++k) mesh.positions.emplace_back(std::cos(k * M_PI / 3.0), std::sin(k * M_PI / 3.0), 5.0);
+  for (int k = 0; k < 6; ++k) mesh.triangles.push_back({centre, centre + 1 + k, centre + 1 + (k + 1) % 6});
+  const Vec3 offset(1.37, -2.91, 0.0);
+  TriMesh moved = mesh;
+  for (Vec3& p : moved.positions) p += offset;
+  const FaceBvh here(mesh), there(moved);
+  const auto cost = [](const ClosestPoint& c) { return 1.0 + c.distance; };
+  const auto radius = [](double c) { return c - 1.0; };
+  std::vector<Vec3> queries = {offset + Vec3(0.0, 0.0, 5.5)};
+  for (int i = 0; i < 200; ++i) queries.push_back(offset + Vec3(u(rng), u(rng), u(rng)));
+  for (const Vec3& p : queries) {
+    double a = 0.0, b = 0.0;
+    const ClosestPoint x = here.min_cost_face(p, cost, radius, &a, std::numeric_limits<double>::infinity(), {}, -1, offset);
+    const ClosestPoint y = there.min_cost_face(p, cost, radius, &b);
+    EXPECT_EQ(x.face, y.face);
+    EXPECT_EQ(x.point, y.point);
+    EXPECT_EQ(x.distance, y.distance);
+    EXPECT_EQ(a, b);
+  }
+}
+
 TEST(FaceBvh, SubsetAnswersNameTheMeshFacesAsBruteForceOverTheSubset) {
   std::mt19937 rng(29);
   std::uniform_real_distribution<double> u(0.0, 4.0), d(-0.4, 0.4);

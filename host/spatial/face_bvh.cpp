@@ -53,6 +53,8 @@ struct QueryState {
   const TriMesh* mesh = nullptr;
   const int32_t* faces_of = nullptr;  // the mesh face of each primitive; null: the primitive's index
   Vec3 p{0.0};
+  Vec3 offset{0.0};  // min cost queries: the faces' corners are positions + offset
+  bool moved = false;
   double slack = 0.0;  // absolute padding for float rounding of the query point and boxes
   // Closest point / min cost queries.
   ClosestPoint best;
@@ -104,7 +106,15 @@ bool min_cost_callback(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<QueryState*>(args->userPtr);
   const int32_t f = face_of(q->faces_of, args->primID);
   if (*q->face_bound && (*q->face_bound)(f) > q->best_cost) return false;  // cannot beat or tie it
-  const ClosestPoint cp = closest_on_face(*q->mesh, f, q->p);
+  ClosestPoint cp;
+  if (q->moved) {
+    const Tri& t = q->mesh->triangles[f];
+    const auto& x = q->mesh->positions;
+    cp = closest_point_on_triangle(q->p, x[t[0]] + q->offset, x[t[1]] + q->offset, x[t[2]] + q->offset);
+    cp.face = f;
+  } else {
+    cp = closest_on_face(*q->mesh, f, q->p);
+  }
   const double c = (*q->cost)(cp);
   if (c < q->best_cost || (c == q->best_cost && f < q->best.face)) {
     q->best_cost = c;
@@ -301,22 +311,28 @@ ClosestPoint FaceBvh::closest_point(const Vec3& p, double max_distance) const {
 ClosestPoint FaceBvh::min_cost_face(const Vec3& p, const std::function<double(const ClosestPoint&)>& cost,
                                     const std::function<double(double best_cost)>& radius_for,
                                     double* best_cost, double known_cost,
-                                    const std::function<double(int32_t)>& face_bound, int32_t known_face) const {
+                                    const std::function<double(int32_t)>& face_bound, int32_t known_face,
+                                    const Vec3& offset) const {
   QueryState q;
   q.mesh = &mesh_;
   q.faces_of = impl_->faces_of();
   q.p = p;
+  q.offset = offset;
+  q.moved = offset != Vec3(0.0);
   q.cost = &cost;
   q.radius_for = &radius_for;
   q.face_bound = &face_bound;
   q.best_cost = known_cost;
   q.best.face = known_face;  // a tie goes to a lower index only
-  q.slack = impl_->slack + kRelativeSlack * std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
+  // The searched point is p - offset; the slack covers its rounding and that of the moved corners.
+  const Vec3 at = p - offset;
+  const double scale = std::max({std::abs(at.x), std::abs(at.y), std::abs(at.z), std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  q.slack = impl_->slack + kRelativeSlack * scale;
   if (primitives_ > 0) {
     RTCPointQuery query;
-    query.x = static_cast<float>(p.x);
-    query.y = static_cast<float>(p.y);
-    query.z = static_cast<float>(p.z);
+    query.x = static_cast<float>(at.x);
+    query.y = static_cast<float>(at.y);
+    query.z = static_cast<float>(at.z);
     query.time = 0.0f;
     query.radius = std::isfinite(known_cost) ? padded_radius(radius_for(known_cost), q.slack) : INFINITY;
     RTCPointQueryContext context;

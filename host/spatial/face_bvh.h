@@ -59,14 +59,17 @@ class FaceBvh {
   //! radius_for(known_cost), and when no face beats it (costs less, or as much with a lower
   //! index than `known_face`) the answer has face -1 and `best_cost` = known_cost. `face_bound`,
   //! when given, is a cheap lower bound of a face's cost (without its closest point): a face
-  //! whose bound exceeds the best so far is passed over.
+  //! whose bound exceeds the best so far is passed over. With `offset`, the faces are taken moved
+  //! by it: closest points are measured to the corners positions[v] + offset (the arithmetic of a
+  //! moved copy of the mesh, so the answer is that copy's BVH's), and the BVH is searched around
+  //! p - offset.
   ClosestPoint min_cost_face(const Vec3& p,
                              const std::function<double(const ClosestPoint&)>& cost,
                              const std::function<double(double best_cost)>& radius_for,
                              double* best_cost,
                              double known_cost = std::numeric_limits<double>::infinity(),
                              const std::function<double(int32_t face)>& face_bound = {},
-                             int32_t known_face = -1) const;
+                             int32_t known_face = -1, const Vec3& offset = Vec3(0.0)) const;
 
   //! The first face met by the ray origin + t * direction, 0 < t <= max_distance, both sides of a
   //! face counting; `distance` is t (the Euclidean distance when direction has unit length).
