@@ -272,6 +272,53 @@ TEST(Correspondence, MatchesBruteForceOnRandomScene) {
   EXPECT_GT(pruned_b, 0);
 }
 
+// Inputs that are some of a swatch's elements moved by one translation, searched in the swatch's
+// own index (SwatchFaces): the brute force's pairs, and bit for bit those of a search of the
+// moved copies themselves.
+TEST(Correspondence, ASwatchIndexGivesThePairsOfItsMovedElements) {
+  std::vector<TriMesh> elements, outs;
+  for (int i = 0; i < 6; ++i) elements.push_back(sphere(5 + i % 2, 8, 1.0, Vec3(2.4 * i, 0.3 * i, 0), 30 + i));
+  const SwatchFaces faces(elements);
+  const glm::dvec2 t(0.37, -1.21);
+  const std::vector<int32_t> sources = {0, 2, 3, 5};
+  std::vector<TriMesh> ins;
+  for (int32_t k : sources) {
+    TriMesh moved = elements[k];
+    for (Vec3& p : moved.positions) p += Vec3(t, 0.0);
+    ins.push_back(moved);
+  }
+  outs.push_back(sphere(6, 9, 0.9, Vec3(1.1, -0.8, 0.2), 40));
+  outs.push_back(sphere(4, 7, 1.1, Vec3(5.2, -0.5, -0.1), 41));
+  outs.push_back(sphere(5, 6, 1.0, Vec3(7.5, 0.1, 0.3), 42, /*flip=*/true));
+  outs.push_back(sphere(5, 6, 1.0, Vec3(12.3, 0.4, 0.1), 43));
+  outs.push_back(sphere(4, 6, 0.8, Vec3(9.8, 0.0, 0.0), 44));  // over element 4, not an input
+  const auto in_overlap = [](const Vec3& p) { return p.x < 12.6; };
+  for (const CorrespondenceOptions& o : {CorrespondenceOptions{}, CorrespondenceOptions{1.0, 0.4},
+                                         CorrespondenceOptions{0.0, 3.0}, CorrespondenceOptions{4.0, 1.0}}) {
+    SCOPED_TRACE("lambda " + std::to_string(o.lambda) + " factor " + std::to_string(o.max_distance_factor));
+    const Correspondences indexed = find_correspondences(outs, ins, faces, sources, t, in_overlap, o);
+    const Correspondences direct = find_correspondences(outs, ins, in_overlap, o);
+    EXPECT_FALSE(indexed.pairs.empty());
+    expect_matches_reference(indexed, outs, ins, in_overlap, o, nullptr);
+    ASSERT_EQ(indexed.pairs.size(), direct.pairs.size());
+    for (size_t k = 0; k < direct.pairs.size(); ++k) {
+      const VertexFacePair &a = indexed.pairs[k], &b = direct.pairs[k];
+      EXPECT_EQ(std::tie(a.out_element, a.out_vertex, a.in_element, a.in_face),
+                std::tie(b.out_element, b.out_vertex, b.in_element, b.in_face)) << "pair " << k;
+      EXPECT_EQ(a.closest, b.closest) << "pair " << k;
+      EXPECT_EQ(a.barycentric, b.barycentric) << "pair " << k;
+      EXPECT_EQ(a.distance, b.distance) << "pair " << k;
+    }
+    ASSERT_EQ(indexed.relations.size(), direct.relations.size());
+    for (size_t r = 0; r < direct.relations.size(); ++r) {
+      EXPECT_EQ(indexed.relations[r].out_element, direct.relations[r].out_element);
+      EXPECT_EQ(indexed.relations[r].in_element, direct.relations[r].in_element);
+      EXPECT_EQ(indexed.relations[r].pairs, direct.relations[r].pairs);
+    }
+  }
+  EXPECT_THROW(find_correspondences(outs, ins, faces, {0, 2}, t, in_overlap), std::invalid_argument);
+}
+
 TEST(Correspondence, OppositeNormalsArePruned) {
   // An output plane facing down, just above an input plane facing up: every nearest face is
   // right below with the opposite normal.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -169,9 +170,9 @@ struct JoinedInput {
   // The faces around each vertex in compressed rows (a counting sort: this is built per patch;
   // sorting every edge instead, the Apple row's correspondence took 1.46 s against 1.08).
   std::vector<int32_t> vertex_face_first, vertex_faces;
-  double longest_edge = 0.0;
+  std::vector<double> element_longest_edge;  // of each element's faces
 
-  explicit JoinedInput(const std::vector<TriMesh>& elements) {
+  explicit JoinedInput(const std::vector<TriMesh>& elements) : element_longest_edge(elements.size(), 0.0) {
     size_t nv = 0, nf = 0;
     for (const TriMesh& e : elements) nv += e.num_vertices(), nf += e.num_faces();
     mesh.positions.reserve(nv);
@@ -190,25 +191,43 @@ struct JoinedInput {
         face_local.push_back(static_cast<int32_t>(f));
       }
     }
-    face_normal.resize(nf);
-    face_sphere = face_spheres(mesh);
+    measure();
     vertex_face_first.assign(mesh.positions.size() + 1, 0);
-    for (size_t f = 0; f < nf; ++f) {
-      const Tri& t = mesh.triangles[f];
-      const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
-      const double len = glm::length(n);
-      face_normal[f] = len > 0.0 ? n / len : Vec3(0.0);
-      for (int k = 0; k < 3; ++k) {
-        ++vertex_face_first[t[k] + 1];
-        if (t[k] != t[(k + 1) % 3])
-          longest_edge = std::max(longest_edge, glm::length(mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]));
-      }
-    }
+    for (const Tri& t : mesh.triangles)
+      for (int32_t v : t) ++vertex_face_first[v + 1];
     std::partial_sum(vertex_face_first.begin(), vertex_face_first.end(), vertex_face_first.begin());
     vertex_faces.resize(vertex_face_first.back());
     std::vector<int32_t> fill(vertex_face_first.begin(), vertex_face_first.end() - 1);
     for (size_t f = 0; f < nf; ++f)
       for (int32_t v : mesh.triangles[f]) vertex_faces[fill[v]++] = static_cast<int32_t>(f);
+  }
+
+  //! A copy with every position moved by `offset`, its measures taken anew from the moved
+  //! positions: bit for bit those of the moved elements joined (normals, spheres and lengths
+  //! round differently at another position).
+  JoinedInput moved(const Vec3& offset) const {
+    JoinedInput copy = *this;
+    for (Vec3& p : copy.mesh.positions) p += offset;
+    copy.measure();
+    return copy;
+  }
+
+  // What depends on the positions: unit normals, spheres and each element's longest edge.
+  void measure() {
+    const size_t nf = mesh.num_faces();
+    face_normal.resize(nf);
+    face_sphere = face_spheres(mesh);
+    std::fill(element_longest_edge.begin(), element_longest_edge.end(), 0.0);
+    for (size_t f = 0; f < nf; ++f) {
+      const Tri& t = mesh.triangles[f];
+      const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+      const double len = glm::length(n);
+      face_normal[f] = len > 0.0 ? n / len : Vec3(0.0);
+      for (int k = 0; k < 3; ++k)
+        if (t[k] != t[(k + 1) % 3])
+          element_longest_edge[face_element[f]] =
+              std::max(element_longest_edge[face_element[f]], glm::length(mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]));
+    }
   }
 
   //! Mean length of the distinct edges with an endpoint at a vertex of face f (pruning (b)).
@@ -274,10 +293,28 @@ bool projections_overlap(const TriMesh& a, const TriMesh& b) {
   return projections_overlap(pa, pb, scratch);
 }
 
-Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
-                                     const std::vector<TriMesh>& in_elements,
-                                     const std::function<bool(const Vec3&)>& in_overlap,
-                                     const CorrespondenceOptions& options) {
+struct SwatchFaces::Impl {
+  JoinedInput joined;
+  FaceBvh bvh;
+  explicit Impl(const std::vector<TriMesh>& elements) : joined(elements), bvh(joined.mesh) {}
+};
+
+SwatchFaces::SwatchFaces(const std::vector<TriMesh>& elements) : impl_(std::make_unique<Impl>(elements)) {}
+SwatchFaces::~SwatchFaces() = default;
+
+namespace {
+
+Correspondences relate(const std::vector<TriMesh>& out_elements, const std::vector<TriMesh>& in_elements,
+                       const std::vector<Query>& queries, const CorrespondenceOptions& options,
+                       const JoinedInput& input, const FaceBvh& bvh, const std::vector<int32_t>& input_of,
+                       const Vec3& offset);
+
+// The queries, then the search over `faces` (the swatch's elements `sources` moved by
+// `translation`) or, without it, over a BVH of in_elements built here.
+Correspondences correspond(const std::vector<TriMesh>& out_elements, const std::vector<TriMesh>& in_elements,
+                           const std::function<bool(const Vec3&)>& in_overlap, const CorrespondenceOptions& options,
+                           const SwatchFaces::Impl* faces, const std::vector<int32_t>& sources,
+                           const glm::dvec2& translation) {
   const double lambda = options.lambda;
   if (!(lambda >= 0.0) || !std::isfinite(lambda)) {
     throw InputError("correspondence: lambda = " + std::to_string(lambda) + " must be finite and >= 0",
@@ -304,23 +341,45 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
   }
   if (queries.empty() || in_elements.empty()) return result;
 
-  const JoinedInput input(in_elements);
-  if (input.mesh.triangles.empty()) return result;
-  // Built for every patch and queried a few hundred times: Embree's fast build pays (1% of the
-  // default job's instructions; ties go to the lower face either way, so answers are the same).
-  const FaceBvh bvh(input.mesh, BvhQuality::low);
+  if (!faces) {
+    const JoinedInput joined(in_elements);
+    if (joined.mesh.triangles.empty()) return result;
+    // Built for every call and queried a few hundred times: Embree's fast build pays (ties go
+    // to the lower face either way, so answers are the same).
+    const FaceBvh bvh(joined.mesh, BvhQuality::low);
+    std::vector<int32_t> identity(in_elements.size());
+    std::iota(identity.begin(), identity.end(), 0);
+    return relate(out_elements, in_elements, queries, options, joined, bvh, identity, Vec3(0.0));
+  }
+  std::vector<int32_t> input_of(faces->joined.element_longest_edge.size(), -1);
+  for (size_t i = 0; i < sources.size(); ++i) input_of.at(sources[i]) = static_cast<int32_t>(i);
+  const Vec3 offset(translation, 0.0);
+  return relate(out_elements, in_elements, queries, options, faces->joined.moved(offset), faces->bvh, input_of, offset);
+}
 
+Correspondences relate(const std::vector<TriMesh>& out_elements, const std::vector<TriMesh>& in_elements,
+                       const std::vector<Query>& queries, const CorrespondenceOptions& options,
+                       const JoinedInput& input, const FaceBvh& bvh, const std::vector<int32_t>& input_of,
+                       const Vec3& offset) {
+  const double lambda = options.lambda;
+  Correspondences result;
   // Pruning (b) drops every pair farther than max_distance_factor x the local mean edge, which is
-  // at most the input's longest edge: a query with no face within `reach` is dropped whatever
+  // at most the inputs' longest edge: a query with no face within `reach` is dropped whatever
   // face minimizes Eq. 1 (the Apple row's points between fruit, a sixth of its queries).
-  const double reach = options.max_distance_factor * input.longest_edge * (1.0 + 1e-9);
+  double longest_edge = 0.0;
+  for (size_t e = 0; e < input_of.size(); ++e)
+    if (input_of[e] >= 0) longest_edge = std::max(longest_edge, input.element_longest_edge[e]);
+  const double reach = options.max_distance_factor * longest_edge * (1.0 + 1e-9);
 
   // Eq. 1-2 per query. Each chunk builds its cost functions once, around a pointer to the current
   // query, so a query allocates nothing.
   std::vector<ClosestPoint> nearest(queries.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, queries.size(), 32), [&](const tbb::blocked_range<size_t>& r) {
     const Query* current = nullptr;
-    const std::function<double(const ClosestPoint&)> cost = [&current, &input, lambda](const ClosestPoint& cp) {
+    // A face of an element that is not an input costs infinity, which never wins (a search
+    // without a finite bound yet still measures it).
+    const std::function<double(const ClosestPoint&)> cost = [&current, &input, &input_of, lambda](const ClosestPoint& cp) {
+      if (input_of[input.face_element[cp.face]] < 0) return std::numeric_limits<double>::infinity();
       return (1.0 + lambda * cp.distance) * (1.0 + glm::length(current->normal - input.face_normal[cp.face]));
     };
     // D >= 1 + lambda Dist: beyond (D_best - 1) / lambda no face can do better. (Seeding the
@@ -332,7 +391,8 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
     // A face's normal term and its bounding sphere rule most faces out without a closest point.
     // (Also notes whether the face may lie within reach: its sphere's gap is at most its distance.)
     bool near_seen = false;
-    const std::function<double(int32_t)> bound = [&current, &input, lambda, reach, &near_seen](int32_t f) {
+    const std::function<double(int32_t)> bound = [&current, &input, &input_of, lambda, reach, &near_seen](int32_t f) {
+      if (input_of[input.face_element[f]] < 0) return std::numeric_limits<double>::infinity();  // not an input
       const auto& [centre, radius] = input.face_sphere[f];
       const double gap = std::max(glm::length(current->position - centre) - radius, 0.0);
       near_seen = near_seen || gap <= reach;
@@ -349,11 +409,11 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
       current = &queries[q];
       if (capped_first) {
         near_seen = false;
-        nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best, capped, bound);
+        nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best, capped, bound, -1, offset);
         if (nearest[q].face >= 0 || !near_seen) continue;
       }
       nearest[q] = bvh.min_cost_face(current->position, cost, radius_for, &best,
-                                     std::numeric_limits<double>::infinity(), bound);
+                                     std::numeric_limits<double>::infinity(), bound, -1, offset);
     }
   });
 
@@ -368,7 +428,7 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
     VertexFacePair p;
     p.out_element = queries[q].element;
     p.out_vertex = queries[q].vertex;
-    p.in_element = input.face_element[cp.face];
+    p.in_element = input_of[input.face_element[cp.face]];
     p.in_face = input.face_local[cp.face];
     p.closest = cp.point;
     p.barycentric = cp.barycentric;
@@ -439,6 +499,26 @@ Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
     return std::pair(a.out_element, a.in_element) < std::pair(b.out_element, b.in_element);
   });
   return result;
+}
+
+}  // namespace
+
+Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
+                                     const std::vector<TriMesh>& in_elements,
+                                     const std::function<bool(const Vec3&)>& in_overlap,
+                                     const CorrespondenceOptions& options) {
+  return correspond(out_elements, in_elements, in_overlap, options, nullptr, {}, glm::dvec2(0.0));
+}
+
+Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
+                                     const std::vector<TriMesh>& in_elements, const SwatchFaces& swatch,
+                                     const std::vector<int32_t>& sources, const glm::dvec2& translation,
+                                     const std::function<bool(const Vec3&)>& in_overlap,
+                                     const CorrespondenceOptions& options) {
+  if (sources.size() != in_elements.size())
+    throw std::invalid_argument("find_correspondences: " + std::to_string(sources.size()) + " sources for " +
+                                std::to_string(in_elements.size()) + " inputs");
+  return correspond(out_elements, in_elements, in_overlap, options, swatch.impl_.get(), sources, translation);
 }
 
 }  // namespace meshquilt

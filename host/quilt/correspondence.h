@@ -4,7 +4,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "mesh/tri_mesh.h"
 
@@ -55,6 +58,34 @@ struct Correspondences {
 //!        InputError for a triangle index out of range.
 Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
                                      const std::vector<TriMesh>& in_elements,
+                                     const std::function<bool(const Vec3&)>& in_overlap,
+                                     const CorrespondenceOptions& options = {});
+
+//! The faces of a swatch's elements, indexed once for every patch's correspondences (a patch's
+//! inputs are some of these elements, each moved by the patch's translation).
+class SwatchFaces {
+ public:
+  explicit SwatchFaces(const std::vector<TriMesh>& elements);
+  ~SwatchFaces();
+  SwatchFaces(const SwatchFaces&) = delete;
+  SwatchFaces& operator=(const SwatchFaces&) = delete;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+  friend Correspondences find_correspondences(const std::vector<TriMesh>&, const std::vector<TriMesh>&,
+                                              const SwatchFaces&, const std::vector<int32_t>&, const glm::dvec2&,
+                                              const std::function<bool(const Vec3&)>&, const CorrespondenceOptions&);
+};
+
+//! find_correspondences for inputs that are the swatch's elements `sources` (ascending, one per
+//! input) moved by `translation`, in_elements[i] being that moved copy of element sources[i]: the
+//! same pairs, found in `swatch`'s BVH (with the faces moved as the inputs are) rather than in a
+//! BVH built for the call. \throw std::invalid_argument when the sizes differ.
+Correspondences find_correspondences(const std::vector<TriMesh>& out_elements,
+                                     const std::vector<TriMesh>& in_elements, const SwatchFaces& swatch,
+                                     const std::vector<int32_t>& sources, const glm::dvec2& translation,
                                      const std::function<bool(const Vec3&)>& in_overlap,
                                      const CorrespondenceOptions& options = {});
 

@@ -239,6 +239,7 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
     swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();
   }
   swatch.mean_edge = mean_edge_length(swatch.mesh);
+  swatch.faces = std::make_shared<const SwatchFaces>(swatch.elements);
   return swatch;
 }
 
@@ -318,7 +319,9 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   Correspondences corr;
   {
     StageTimer timer(seconds, "correspondence");
-    corr = find_correspondences(outs, inputs, in_overlap, options.correspondence);
+    corr = swatch.faces ? find_correspondences(outs, inputs, *swatch.faces, input_source, t, in_overlap,
+                                               options.correspondence)
+                        : find_correspondences(outs, inputs, in_overlap, options.correspondence);
   }
   check_cancel();
 

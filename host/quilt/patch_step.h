@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -68,6 +69,9 @@ struct QuiltSwatch {
   glm::dvec2 extent{0.0};             //!< x-y size of the swatch
   double mean_edge = 1.0;             //!< mean edge length: the unit of Eq. 1 distances
   bool closed_elements = true;        //!< every element a closed 2-manifold
+  //! Its elements' faces indexed for correspondences (prepare_swatch builds it; without it each
+  //! patch indexes its inputs).
+  std::shared_ptr<const SwatchFaces> faces;
 };
 
 //! Puts `input` in its swatch frame and splits it into elements.
