@@ -305,16 +305,12 @@ TEST(FaceBvh, OverlappingPairsMatchBruteForce) {
   EXPECT_EQ(found, expected);
 }
 
-// A BVH over some faces of a mesh answers as brute force over those faces does, naming the mesh's
-// faces: closest points, least costs with ties to the lowest mesh index (also against a known
-// face of another subset), box queries and overlapping pairs.
-// A search with an offset answers as a BVH of the moved copy does: the same face, closest point
-// and cost, bit for bit, ties included (a fan of equally near faces around one query).
-TEST(FaceBvh, AnOffsetSearchAnswersAsTheMovedCopysBvh) {
-  std::mt19937 rng(31);
+// `count` small triangles scattered over [0, 4]^3, then a fan of six equally near coplanar faces
+// straight below (0, 0, 5.5) (faces count to count + 5): ties for a query there.
+TriMesh scattered_with_fan(std::mt19937& rng, int count) {
   std::uniform_real_distribution<double> u(0.0, 4.0), d(-0.4, 0.4);
   TriMesh mesh;
-  for (int i = 0; i < 400; ++i) {
+  for (int i = 0; i < count; ++i) {
     const Vec3 c(u(rng), u(rng), u(rng));
     const auto base = static_cast<int32_t>(mesh.positions.size());
     for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + Vec3(d(rng), d(rng), d(rng)));
@@ -324,6 +320,15 @@ TEST(FaceBvh, AnOffsetSearchAnswersAsTheMovedCopysBvh) {
   mesh.positions.emplace_back(0.0, 0.0, 5.0);
   for (int k = 0; k < 6; ++k) mesh.positions.emplace_back(std::cos(k * M_PI / 3.0), std::sin(k * M_PI / 3.0), 5.0);
   for (int k = 0; k < 6; ++k) mesh.triangles.push_back({centre, centre + 1 + k, centre + 1 + (k + 1) % 6});
+  return mesh;
+}
+
+// A search with an offset answers as a BVH of the moved copy does: the same face, closest point
+// and cost, bit for bit, ties included (a fan of equally near faces around one query).
+TEST(FaceBvh, AnOffsetSearchAnswersAsTheMovedCopysBvh) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(0.0, 4.0);
+  const TriMesh mesh = scattered_with_fan(rng, 400);
   const Vec3 offset(1.37, -2.91, 0.0);
   TriMesh moved = mesh;
   for (Vec3& p : moved.positions) p += offset;
@@ -343,22 +348,15 @@ TEST(FaceBvh, AnOffsetSearchAnswersAsTheMovedCopysBvh) {
   }
 }
 
+// A BVH over some faces of a mesh answers as brute force over those faces does, naming the mesh's
+// faces: closest points, least costs with ties to the lowest mesh index (also against a known
+// face of another subset), box queries and overlapping pairs.
 TEST(FaceBvh, SubsetAnswersNameTheMeshFacesAsBruteForceOverTheSubset) {
   std::mt19937 rng(29);
-  std::uniform_real_distribution<double> u(0.0, 4.0), d(-0.4, 0.4);
-  TriMesh mesh;
-  for (int i = 0; i < 600; ++i) {
-    const Vec3 c(u(rng), u(rng), u(rng));
-    const auto base = static_cast<int32_t>(mesh.positions.size());
-    for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + Vec3(d(rng), d(rng), d(rng)));
-    mesh.triangles.push_back({base, base + 1, base + 2});
-  }
-  // A fan of equally near coplanar faces straight below (0, 0, 5.5): faces 600-605, listed into
-  // the subset in reverse so that the lowest index is not the first primitive.
-  const auto centre = static_cast<int32_t>(mesh.positions.size());
-  mesh.positions.emplace_back(0.0, 0.0, 5.0);
-  for (int k = 0; k < 6; ++k) mesh.positions.emplace_back(std::cos(k * M_PI / 3.0), std::sin(k * M_PI / 3.0), 5.0);
-  for (int k = 0; k < 6; ++k) mesh.triangles.push_back({centre, centre + 1 + k, centre + 1 + (k + 1) % 6});
+  std::uniform_real_distribution<double> u(0.0, 4.0);
+  // The fan's faces 600-605 go into the subset in reverse, so that the lowest index is not the
+  // first primitive.
+  TriMesh mesh = scattered_with_fan(rng, 600);
   std::vector<int32_t> subset;
   for (int32_t f = 605; f >= 0; --f)
     if (f >= 600 || f % 3 != 0) subset.push_back(f);
