@@ -319,9 +319,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   Correspondences corr;
   {
     StageTimer timer(seconds, "correspondence");
-    corr = swatch.faces ? find_correspondences(outs, inputs, *swatch.faces, input_source, t, in_overlap,
-                                               options.correspondence)
-                        : find_correspondences(outs, inputs, in_overlap, options.correspondence);
+    corr = find_correspondences(outs, inputs, *swatch.faces, input_source, t, in_overlap, options.correspondence);
   }
   check_cancel();
 

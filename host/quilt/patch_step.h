@@ -69,8 +69,7 @@ struct QuiltSwatch {
   glm::dvec2 extent{0.0};             //!< x-y size of the swatch
   double mean_edge = 1.0;             //!< mean edge length: the unit of Eq. 1 distances
   bool closed_elements = true;        //!< every element a closed 2-manifold
-  //! Its elements' faces indexed for correspondences (prepare_swatch builds it; without it each
-  //! patch indexes its inputs).
+  //! Its elements' faces indexed once for every patch's correspondences.
   std::shared_ptr<const SwatchFaces> faces;
 };
 
@@ -139,6 +138,7 @@ struct PatchOutcome {
 
 //! Runs one patch on `layer` (modified in place: elements deformed, merged, replaced; inputs
 //! appended). Stage seconds accumulate in `seconds` under match, correspondence, deform, merge.
+//! \pre `swatch` comes from prepare_swatch.
 //! \throw SolverError, DeviceError from the stages; Cancelled when `cancel` is set.
 PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& request,
                          const QuiltSwatch& swatch, const GeometryMatcher& matcher,
