@@ -7,12 +7,14 @@
 
 #include "commands.h"
 #include "error.h"
+#include "heap_reuse.h"
 #include "signals.h"
 
 int main(int argc, char** argv) {
   using meshquilt::ExitCode;
   // Ctrl-C and SIGTERM cancel long work through a token (exit code `interrupted`), never mid-write.
   meshquilt::cli::install_interrupt_handlers();
+  meshquilt::cli::keep_freed_memory();
   CLI::App app{"meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting"};
   app.require_subcommand(1);
   meshquilt::cli::add_swatch_command(app);
