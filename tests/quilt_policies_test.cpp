@@ -61,8 +61,39 @@ TEST(PassesThrough, TouchingCountsAndNothingIsNothing) {
   const TriMesh apart = moved(touching, Vec3(0.0, -1e-9, 0.0));
   EXPECT_TRUE(passes_through(a, {&touching}));
   EXPECT_EQ(passes_through(a, {&apart}), brute_force(a, {&apart}));
-  EXPECT_FALSE(passes_through(a, {}));
+  EXPECT_FALSE(passes_through(a, std::vector<const TriMesh*>{}));
   EXPECT_FALSE(passes_through(TriMesh{}, {&touching}));
+}
+
+// Runs of consecutive faces, each box holding its faces' corners; a ring's runs, kept by the
+// caller, answer as the runs measured per call do.
+TEST(PassesThrough, FaceRunsHoldTheirFacesAndKeptRunsAnswerTheSame) {
+  ChainmailOptions options = ChainmailOptions::small();
+  options.rows = 2;
+  options.columns = 1;
+  const TriMesh rings = make_chainmail(options);
+  const std::vector<Box3> runs = face_run_boxes(rings);
+  ASSERT_EQ(runs.size(), (rings.num_faces() + kFaceRun - 1) / kFaceRun);
+  for (size_t f = 0; f < rings.num_faces(); ++f)
+    for (int32_t v : rings.triangles[f]) {
+      const Vec3& p = rings.positions[v];
+      const Box3& run = runs[f / kFaceRun];
+      EXPECT_TRUE(run.lo.x <= p.x && p.x <= run.hi.x && run.lo.y <= p.y && p.y <= run.hi.y && run.lo.z <= p.z &&
+                  p.z <= run.hi.z)
+          << "face " << f;
+    }
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> shift(-3.0, 3.0);
+  int hits = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const TriMesh other = moved(rings, Vec3(shift(rng), shift(rng), 0.2 * shift(rng)));
+    const std::vector<Box3> other_runs = face_run_boxes(other);
+    const bool expected = brute_force(rings, {&other});
+    EXPECT_EQ(passes_through(rings, std::vector<CollisionMesh>{{&other, &other_runs}}), expected) << "trial " << trial;
+    hits += expected;
+  }
+  EXPECT_GT(hits, 3);
+  EXPECT_LT(hits, 27);
 }
 
 }  // namespace

@@ -334,50 +334,71 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   check_cancel();
 
   StageTimer timer(seconds, "merge");
+  // Each layer element's face runs for the collision checks (quilt_policies.h), measured once per
+  // shape (`forget` when a shape changes): a patch tests some thirty candidates against much the
+  // same neighbours.
+  std::vector<std::optional<std::vector<Box3>>> runs;
+  const auto layer_runs = [&](size_t k) -> const std::vector<Box3>& {
+    if (!runs[k]) runs[k] = face_run_boxes(layer[k].mesh);
+    return *runs[k];
+  };
   // Elements near `mesh` in the layer, but for elements `self` and `also`.
   const auto neighbours = [&](const TriMesh& mesh, int32_t self, int32_t also) {
     const Rect2 b = xy_bounds(mesh);
-    std::vector<const TriMesh*> near;
+    runs.resize(layer.size());  // before any pointer into it is taken (the layer grows between calls)
+    std::vector<CollisionMesh> near;
     for (size_t k = 0; k < layer.size(); ++k) {
       const auto index = static_cast<int32_t>(k);
-      if (layer[k].alive && index != self && index != also && layer[k].bounds.overlaps(b)) near.push_back(&layer[k].mesh);
+      if (layer[k].alive && index != self && index != also && layer[k].bounds.overlaps(b))
+        near.push_back({&layer[k].mesh, &layer_runs(k)});
     }
     return near;
   };
-  // Layer elements in the space the output will live in, placed once per shape (`forget` when a
-  // shape changes). Over a curved base, elements apart in the plane can meet in space (where
-  // normals converge over a concave part, or where a patch wraps around a thin part), so
-  // neighbours there are found by their boxes in space, not in the plane.
-  std::vector<std::optional<std::pair<TriMesh, Box3>>> in_space;
-  const auto placed_layer = [&](size_t k) -> const std::pair<TriMesh, Box3>& {
+  // Layer elements in the space the output will live in, placed once per shape. Over a curved
+  // base, elements apart in the plane can meet in space (where normals converge over a concave
+  // part, or where a patch wraps around a thin part), so neighbours there are found by their
+  // boxes in space, not in the plane.
+  struct Placed {
+    TriMesh mesh;
+    Box3 box;
+    std::vector<Box3> runs;
+  };
+  std::vector<std::optional<Placed>> in_space;
+  const auto placed_layer = [&](size_t k) -> const Placed& {
     if (!in_space[k]) {
       TriMesh placed = request.to_space(layer[k].mesh);
       const Box3 box = bounding_box(placed.positions);
-      in_space[k].emplace(std::move(placed), box);
+      std::vector<Box3> placed_runs = face_run_boxes(placed);
+      in_space[k].emplace(Placed{std::move(placed), box, std::move(placed_runs)});
     }
     return *in_space[k];
   };
   const auto forget = [&](size_t k) {
     if (k < in_space.size()) in_space[k].reset();
+    if (k < runs.size()) runs[k].reset();
   };
   // The collision policy, in the space the output will live in.
   std::vector<Box3> obstacle_bounds;
-  for (const TriMesh& m : request.obstacles) obstacle_bounds.push_back(bounding_box(m.positions));
+  std::vector<std::vector<Box3>> obstacle_runs;
+  for (const TriMesh& m : request.obstacles) {
+    obstacle_bounds.push_back(bounding_box(m.positions));
+    obstacle_runs.push_back(face_run_boxes(m));
+  }
   const auto collides = [&](const TriMesh& mesh, int32_t self, int32_t also = -1) {
     if (!request.to_space) return passes_through(mesh, neighbours(mesh, self, also));
     const TriMesh placed = request.to_space(mesh);
     const Box3 box = bounding_box(placed.positions);
     // Grown before any pointer into it is taken (the layer grows between calls, not during one).
     in_space.resize(layer.size());
-    std::vector<const TriMesh*> near;
+    std::vector<CollisionMesh> near;
     for (size_t k = 0; k < layer.size(); ++k) {
       const auto index = static_cast<int32_t>(k);
       if (!layer[k].alive || index == self || index == also) continue;
-      const auto& [other, other_box] = placed_layer(k);
-      if (other_box.overlaps(box)) near.push_back(&other);
+      const Placed& other = placed_layer(k);
+      if (other.box.overlaps(box)) near.push_back({&other.mesh, &other.runs});
     }
     for (size_t k = 0; k < request.obstacles.size(); ++k)
-      if (obstacle_bounds[k].overlaps(box)) near.push_back(&request.obstacles[k]);
+      if (obstacle_bounds[k].overlaps(box)) near.push_back({&request.obstacles[k], &obstacle_runs[k]});
     return passes_through(placed, near);
   };
   // A deformation that pushes an output element into a neighbour is undone: the element keeps

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesh/measures.h"
 #include "mesh/tri_mesh.h"
 #include "quilt/correspondence.h"
 
@@ -22,9 +23,24 @@ std::vector<const ElementRelation*> choose_partners(const Correspondences& corre
                                                     size_t inputs, double max_mean_distance,
                                                     std::vector<uint8_t>& in_partnered);
 
+//! The bounding boxes of a mesh's faces in runs of kFaceRun consecutive faces (the last run
+//! shorter). A generated element's faces come in sweep order, so a run is compact, and a search
+//! for the faces that meet a box passes over every run whose box misses it.
+inline constexpr size_t kFaceRun = 16;
+std::vector<Box3> face_run_boxes(const TriMesh& mesh);
+
+//! A mesh as passes_through searches it: the mesh and its face_run_boxes (both outlive the call).
+struct CollisionMesh {
+  const TriMesh* mesh;
+  const std::vector<Box3>* runs;
+};
+
 //! Collision policy: true when a face of `candidate` intersects a face of one of `others` (exact
 //! triangle-triangle tests). A deformation that does so is undone; a merge or an input that does
-//! so is refused.
+//! so is refused. Callers that test many candidates against the same neighbours keep their
+//! runs; the answer does not depend on them.
+bool passes_through(const TriMesh& candidate, const std::vector<CollisionMesh>& others);
+//! The same, with the others' runs measured for this call.
 bool passes_through(const TriMesh& candidate, const std::vector<const TriMesh*>& others);
 
 }  // namespace meshquilt
