@@ -25,12 +25,12 @@ struct TestJob {
 
 // ---- The jobs every batch test runs. ------------------------------------------------------
 // Curved-surface jobs cover the shipped sphere (copied beside the manifest). --max-patches keeps each job to a
-// fraction of a second (a full 1x1 plane takes 10-25 s on the shared 2-core machine); job 2 is
-// the largest, so the kill test stops the batch while it runs.
+// fraction of a second; job 2 is the largest (about 0.9 s), so the kill test, 300 ms after it
+// starts, stops the batch while it runs.
 const TestJob kJobs[] = {
     {"out/chain1.ply", R"(["--swatch", "chain.ply", "--plane", "1x1", "--seed", 1, "--backend", "cpu", "--max-patches", 3])"},
     {"out/twill2.ply", R"(["--swatch", "twill.ply", "--plane", "1x1", "--seed", 2, "--backend", "cpu", "--max-patches", 3])"},
-    {"out/chain3.ply", R"({"swatch": "chain.ply", "plane": "1.5x1.5", "seed": 3, "backend": "cpu", "max-patches": 12, "stats": "out/chain3.json"})"},
+    {"out/chain3.ply", R"({"swatch": "chain.ply", "plane": "3x3", "seed": 3, "backend": "cpu", "max-patches": 60, "stats": "out/chain3.json"})"},
     {"out/twill4.obj", R"(["--swatch", "twill.ply", "--plane", "1x1", "--seed", 4, "--backend", "cpu", "--max-patches", 3])"},
     {"out/builtin5.ply", R"(["--plane", "1x1", "--seed", 5, "--backend", "cpu", "--max-patches", 3])"},
     {"out/chain6.off", R"({"swatch": "chain.ply", "plane": "1x1.5", "seed": 6, "backend": "cpu", "max-patches": 3})"},
@@ -226,9 +226,7 @@ TEST_F(BatchTest, SigkillMidJobThenRerunRedoesOnlyUnfinishedJobs) {
   kill(batch, SIGKILL);
   wait_child(batch);
   const std::string first = read_file(log);
-  const size_t finished = count_of(first, "\"status\":\"done\"");
-  EXPECT_GE(finished, 2u) << first;
-  EXPECT_LT(finished, kJobCount) << first;
+  const size_t logged = count_of(first, "\"status\":\"done\"");
 
   // The running synth died with the batch (PR_SET_PDEATHSIG): nothing writes behind the rerun.
   std::vector<std::string> orphans;
@@ -241,9 +239,14 @@ TEST_F(BatchTest, SigkillMidJobThenRerunRedoesOnlyUnfinishedJobs) {
 
   std::vector<FileStamp> before;
   for (const TestJob& job : kJobs) before.push_back(stamp(dir / job.output));
+  // The records decide what is done: a job whose record was written when the kill came, before
+  // its progress line, is done but not logged.
   const CliResult partial = run_cli("batch " + quote(dir / "jobs.jsonl") + " --report --format csv");
   EXPECT_EQ(partial.exit_code, 13) << partial.output;
-  EXPECT_EQ(count_of(partial.output, ",done,"), finished) << partial.output;
+  const size_t finished = count_of(partial.output, ",done,");
+  EXPECT_TRUE(finished == logged || finished == logged + 1) << partial.output << first;
+  EXPECT_GE(finished, 2u) << first;
+  EXPECT_LT(finished, kJobCount) << first;
 
   const CliResult rerun = run_cli("batch " + quote(dir / "jobs.jsonl") + " --progress json");
   ASSERT_EQ(rerun.exit_code, 0) << rerun.output;
