@@ -1,5 +1,8 @@
 #include "device.h"
 
+#include <cstdlib>
+#include <filesystem>
+
 #include "cpu_device.h"
 #include "error.h"
 #include "vulkan_device.h"
@@ -31,11 +34,35 @@ void Device::record(const DispatchTiming& timing, std::uint32_t invocations) {
   stats_.wall_seconds += timing.wall_seconds;
 }
 
+namespace {
+
+// Whether the machine shows a GPU that a Vulkan driver could use: a DRM render node (Mesa's and
+// AMD's drivers), an NVIDIA device or WSL's GPU, or a driver named by the loader's variables.
+// Without one only a software device can come up, and creating an instance to find that out
+// costs about 70 ms (the loader loads lavapipe and LLVM).
+bool gpu_may_be_present() {
+  if (std::getenv("VK_ICD_FILENAMES") || std::getenv("VK_DRIVER_FILES")) return true;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", error))
+    if (entry.path().filename().string().starts_with("renderD")) return true;
+  for (const char* node : {"/dev/nvidia0", "/dev/nvidiactl", "/dev/dxg"})
+    if (std::filesystem::exists(node, error)) return true;
+  return false;
+}
+
+}  // namespace
+
 std::unique_ptr<Device> open_device(BackendChoice choice, std::string* note) {
   if (note) note->clear();
   if (choice == BackendChoice::cpu) return open_cpu_device();
   if (choice == BackendChoice::vulkan) return open_vulkan_device();
   // automatic: any failure to bring Vulkan up is a reason to fall back, not to stop.
+  if (!gpu_may_be_present()) {
+    if (note)
+      *note = "no GPU device (/dev/dri/renderD*, /dev/nvidia*, /dev/dxg); using the CPU back end (--backend vulkan "
+              "forces a software Vulkan device)";
+    return open_cpu_device();
+  }
   try {
     std::unique_ptr<Device> vulkan = open_vulkan_device();
     if (!vulkan->software_rasterizer()) return vulkan;

@@ -149,7 +149,9 @@ class Device {
 
 //! Opens a device. `automatic` uses Vulkan when a usable GPU exists and otherwise returns
 //! the CPU back end (also when the only Vulkan device is a software one such as lavapipe, which
-//! runs the same kernels several times slower than the CPU back end), setting *note (when non-null) to one line saying why; `vulkan` requires a
+//! runs the same kernels several times slower than the CPU back end, and without trying Vulkan
+//! when the machine has no GPU device node and the loader's VK_ICD_FILENAMES / VK_DRIVER_FILES
+//! are unset), setting *note (when non-null) to one line saying why; `vulkan` requires a
 //! Vulkan device; `cpu` always succeeds. *note is cleared when there is nothing to say.
 //! \throw DeviceError when `vulkan` is chosen and no Vulkan device can be opened (or the build
 //! has no Vulkan back end, MESHQUILT_VULKAN=OFF).
