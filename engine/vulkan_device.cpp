@@ -1,5 +1,7 @@
 #include "vulkan_device.h"
 
+#include <dlfcn.h>
+#include <link.h>
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
@@ -7,6 +9,7 @@
 #include <cstring>
 #include <map>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -14,6 +17,26 @@
 
 namespace meshquilt::engine {
 namespace {
+
+// The file names of the shared objects loaded into this process now.
+std::set<std::string> loaded_objects() {
+  std::set<std::string> names;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        if (info->dlpi_name && *info->dlpi_name) static_cast<std::set<std::string>*>(out)->insert(info->dlpi_name);
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+// The loader unloads an ICD (lavapipe, and LLVM with it) when the last instance goes. Its state
+// then lies in unmapped globals, so LeakSanitizer reports it as leaked on some machines, and a
+// later device pays to load it again: the objects the instance brought in stay for the process.
+void keep_loaded_since(const std::set<std::string>& before) {
+  for (const std::string& name : loaded_objects())
+    if (!before.count(name)) dlopen(name.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+}
 
 const char* result_name(VkResult result) {
   switch (result) {
@@ -354,12 +377,14 @@ class VulkanDevice final : public Device {
     VkInstanceCreateInfo instance_info{};
     instance_info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     instance_info.pApplicationInfo = &app;
+    const std::set<std::string> before = loaded_objects();
     check(vkCreateInstance(&instance_info, nullptr, &instance_), "vkCreateInstance");
 
     std::uint32_t count = 0;
     check(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices");
     std::vector<VkPhysicalDevice> devices(count);
     if (count > 0) check(vkEnumeratePhysicalDevices(instance_, &count, devices.data()), "vkEnumeratePhysicalDevices");
+    keep_loaded_since(before);
 
     int best_rank = 1 << 30;
     for (VkPhysicalDevice candidate : devices) {

@@ -3,30 +3,13 @@
 // them on purpose updates the hashes in the same commit and says why (with inspect figures).
 #include <gtest/gtest.h>
 
-#include <cstdint>
-#include <cstdio>
 #include <string>
 
+#include "support/golden.h"
 #include "support/run_cli.h"
 
 namespace meshquilt {
 namespace {
-
-// FNV-1a, 64 bits: independent of anything the code under test uses.
-uint64_t fnv1a(const std::string& bytes) {
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::string hex(uint64_t v) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
-  return text;
-}
 
 struct Golden {
   const char* name;
@@ -51,7 +34,7 @@ TEST_P(PlanarGolden, OutputIsByteIdentical) {
   const auto run = test::run_cli("synth " + swatch_option + g.synth_args + " --backend cpu --progress none -o '" +
                                  out.string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_EQ(hex(fnv1a(test::read_file(out))), g.hash) << g.name;
+  EXPECT_EQ(test::fnv1a_hex(test::read_file(out)), g.hash) << g.name;
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -7,3 +7,4 @@ meshquilt_test(planar_quilting_test NEEDS_CLI SOURCES planar_quilting_test.cpp
 meshquilt_test(geometry_matching_test SOURCES geometry_matching_test.cpp
   LIBS meshquilt_quilt meshquilt_swatch meshquilt_spatial meshquilt_mesh meshquilt_kernels meshquilt_engine)
 meshquilt_test(planar_golden_test NEEDS_CLI SOURCES planar_golden_test.cpp LABELS end_to_end)
+meshquilt_test(curved_golden_test NEEDS_CLI SOURCES curved_golden_test.cpp LABELS end_to_end)
