@@ -12,7 +12,7 @@
 #include "error.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
-#include "quilt/element_placement.h"
+#include "surface/element_placement.h"
 #include "shell/texture_file.h"
 
 namespace meshquilt::cli {

@@ -18,8 +18,8 @@
 #include "device.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
-#include "quilt/element_placement.h"
-#include "quilt/surface_quilting.h"
+#include "surface/element_placement.h"
+#include "surface/surface_quilting.h"
 #include "shell/shell_embedding.h"
 #include "swatch/chainmail.h"
 

@@ -6,11 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include "error.h"
+#include "numerics/sparse_solve.h"
 #include "mesh/disjoint_sets.h"
 
 namespace meshquilt {
@@ -71,46 +70,6 @@ OneRing one_ring(const TriMesh& mesh) {
   }
   return r;
 }
-
-//! Eigen's AMD ordering, remembered per sparsity pattern: the copies of one swatch element give
-//! the same pattern patch after patch, and the ordering (a function of the pattern alone) was a
-//! third of a solve. Factorizations are then the very ones AMD gives. Per thread, a few patterns.
-struct CachedAmdOrdering {
-  using PermutationType = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
-
-  template <typename MatrixType>
-  void operator()(const MatrixType& mat, PermutationType& perm) {
-    if (!mat.isCompressed()) {
-      Eigen::AMDOrdering<int>()(mat, perm);
-      return;
-    }
-    struct Entry {
-      std::vector<int> outer, inner;
-      PermutationType perm;
-    };
-    constexpr size_t kEntries = 8;
-    thread_local std::vector<Entry> cache;
-    thread_local size_t next = 0;
-    const int* outer = mat.outerIndexPtr();
-    const int* inner = mat.innerIndexPtr();
-    const auto n = static_cast<size_t>(mat.outerSize());
-    const auto nnz = static_cast<size_t>(outer[n]);
-    for (const Entry& e : cache)
-      if (e.outer.size() == n + 1 && e.inner.size() == nnz && std::equal(e.outer.begin(), e.outer.end(), outer) &&
-          std::equal(e.inner.begin(), e.inner.end(), inner)) {
-        perm = e.perm;
-        return;
-      }
-    Eigen::AMDOrdering<int>()(mat, perm);
-    Entry entry{std::vector<int>(outer, outer + n + 1), std::vector<int>(inner, inner + nnz), perm};
-    if (cache.size() < kEntries) {
-      cache.push_back(std::move(entry));
-    } else {
-      cache[next] = std::move(entry);
-      next = (next + 1) % kEntries;
-    }
-  }
-};
 
 //! Minimizes sum_i |L(w_i) - L(v_i)|^2 + mu sum_rows |sum_k a_k w_k - c|^2 (Eq. 5 and 6 share it).
 std::vector<Vec3> solve_deformation(const TriMesh& mesh, const std::vector<ConstraintRow>& rows, double mu) {
@@ -189,24 +148,11 @@ std::vector<Vec3> solve_deformation(const TriMesh& mesh, const std::vector<Const
   A += mu * (Ct * C);
   const Eigen::MatrixX3d rhs = mu * (Ct * residual.topRows(nrows));
 
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, CachedAmdOrdering> solver;
-  solver.compute(A);
-  if (solver.info() != Eigen::Success) {
-    throw SolverError("element deformation: factorization of the " + std::to_string(m) +
-                      "-vertex Laplacian system failed");
-  }
-  // A semi-definite system (a constrained part whose constraints cannot pin its translation)
-  // factors without complaint but with a vanishing pivot.
-  const Eigen::VectorXd& D = solver.vectorD();
-  const double scale = D.cwiseAbs().maxCoeff();
-  if (!(D.minCoeff() > 1e-12 * scale)) {
-    throw SolverError("element deformation: the " + std::to_string(m) +
-                      "-vertex Laplacian system is singular (constraints do not fix the element)");
-  }
-  const Eigen::MatrixX3d d = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !d.allFinite()) {
-    throw SolverError("element deformation: solve of the " + std::to_string(m) + "-vertex Laplacian system failed");
-  }
+  // A semi-definite system (a constrained part whose constraints cannot pin its translation) is
+  // refused as singular. The copies of one swatch element share a pattern: orderings are reused.
+  const Eigen::MatrixXd d = solve_positive_definite(
+      A, rhs, "element deformation: the " + std::to_string(m) + "-vertex Laplacian system",
+      SolveOptions{SolveOrdering::amd_cached, /*refuse_singular=*/true});
   for (int32_t v = 0; v < nv; ++v) {
     const int32_t i = unknown[v];
     if (i >= 0) result[v] += Vec3(d(i, 0), d(i, 1), d(i, 2));

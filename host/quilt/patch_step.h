@@ -27,7 +27,7 @@
 #include "mesh/tri_mesh.h"
 #include "quilt/correspondence.h"
 #include "quilt/element_deformation.h"
-#include "quilt/element_merging.h"
+#include "quilt/merging/element_merging.h"
 #include "quilt/geometry_matching.h"
 #include "quilt/plane_rect.h"
 

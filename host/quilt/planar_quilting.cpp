@@ -6,7 +6,7 @@
 
 #include "error.h"
 #include "mesh/topology.h"
-#include "quilt/abutting_elements.h"
+#include "quilt/merging/abutting_elements.h"
 #include "quilt/broken_elements.h"
 #include "quilt/hole_tracker.h"
 #include "quilt/seed_finding.h"

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "quilt/conformal_patch.h"
+#include "surface/conformal_patch.h"
 
 namespace meshquilt {
 

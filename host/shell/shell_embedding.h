@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "device.h"
-#include "quilt/surface_embedding.h"
+#include "surface/surface_embedding.h"
 #include "shell/shell_map.h"
 #include "shell/stretch_minimization.h"
 

@@ -15,7 +15,7 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
-#include "quilt/conformal_patch.h"
+#include "surface/conformal_patch.h"
 
 namespace meshquilt {
 

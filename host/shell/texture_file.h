@@ -21,7 +21,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "quilt/surface_quilting.h"
+#include "surface/surface_quilting.h"
 #include "shell/shell_embedding.h"
 
 namespace meshquilt {

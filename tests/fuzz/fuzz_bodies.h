@@ -15,8 +15,8 @@
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/validation.h"
-#include "quilt/conformal_patch.h"
-#include "quilt/guidance_field.h"
+#include "surface/conformal_patch.h"
+#include "surface/guidance_field.h"
 #include "shell/texture_file.h"
 #include "swatch/netpbm.h"
 

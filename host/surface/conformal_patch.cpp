@@ -1,0 +1,416 @@
+#include "surface/conformal_patch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+
+#include <Eigen/Sparse>
+#include <glm/geometric.hpp>
+
+#include "error.h"
+#include "numerics/sparse_solve.h"
+#include "mesh/measures.h"
+#include "mesh/topology.h"
+
+namespace meshquilt {
+namespace {
+
+double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+
+// Barycentrics (b1, b2) of p in triangle (a, b, c) of the plane; NaN for a degenerate one.
+glm::dvec2 plane_barycentric(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  const double area = cross2(b - a, c - a);
+  if (area == 0.0) return glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+  return {cross2(p - a, c - a) / area, cross2(b - a, p - a) / area};
+}
+
+// The point of triangle (a, b, c) nearest to p, as barycentrics (b1, b2).
+glm::dvec2 clamped_barycentric(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  const glm::dvec2 inside = plane_barycentric(p, a, b, c);
+  if (std::isfinite(inside.x) && inside.x >= 0.0 && inside.y >= 0.0 && inside.x + inside.y <= 1.0) return inside;
+  // Nearest point on each edge; the best of three.
+  const glm::dvec2 corners[3] = {a, b, c};
+  double best = std::numeric_limits<double>::max();
+  glm::dvec2 result(0.0);
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec2 s = corners[k], e = corners[(k + 1) % 3];
+    const double len2 = glm::dot(e - s, e - s);
+    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - s, e - s) / len2, 0.0, 1.0) : 0.0;
+    const glm::dvec2 q = s + t * (e - s);
+    const double d = glm::dot(p - q, p - q);
+    if (d >= best) continue;
+    best = d;
+    double w[3] = {0.0, 0.0, 0.0};
+    w[k] = 1.0 - t;
+    w[(k + 1) % 3] = t;
+    result = {w[1], w[2]};
+  }
+  return result;
+}
+
+// V - E + F of a set of faces: 1 for a disk.
+int euler_characteristic(const TriMesh& mesh, const std::vector<int32_t>& faces) {
+  std::unordered_set<int32_t> vertices;
+  std::unordered_set<uint64_t> edges;
+  for (int32_t f : faces) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      vertices.insert(t[k]);
+      edges.insert(undirected_edge_key(t[k], t[(k + 1) % 3]));
+    }
+  }
+  return static_cast<int>(vertices.size()) - static_cast<int>(edges.size()) + static_cast<int>(faces.size());
+}
+
+// The faces of `ball` reached from `seed_face` across edges, nearest first (by their nearest
+// corner's distance), while they stay a disk: a face joins across one edge with a new third
+// vertex, or across two (a notch). Returns them sorted.
+std::vector<int32_t> disk_within(const BaseSurface& base, const std::vector<int32_t>& ball, int32_t seed_face,
+                                 const std::unordered_map<int32_t, double>& distance) {
+  const TriMesh& mesh = base.mesh;
+  const std::unordered_set<int32_t> in_ball(ball.begin(), ball.end());
+  // The face across edge k of f when it is in the ball, else -1.
+  const auto across = [&](int32_t f, int k) {
+    const int32_t g = base.face_across[f][k];
+    return g >= 0 && in_ball.count(g) ? g : -1;
+  };
+  const auto priority = [&](int32_t f) {
+    double d = std::numeric_limits<double>::infinity();
+    for (int32_t v : mesh.triangles[f])
+      if (const auto it = distance.find(v); it != distance.end()) d = std::min(d, it->second);
+    return d;
+  };
+  std::unordered_set<int32_t> in_disk, disk_vertices;
+  std::vector<int32_t> disk;
+  using Entry = std::pair<double, int32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  const auto add = [&](int32_t f) {
+    in_disk.insert(f);
+    disk.push_back(f);
+    for (int k = 0; k < 3; ++k) {
+      disk_vertices.insert(mesh.triangles[f][k]);
+      const int32_t g = across(f, k);
+      if (g >= 0 && !in_disk.count(g)) queue.emplace(priority(g), g);
+    }
+  };
+  add(seed_face);
+  while (!queue.empty()) {
+    const int32_t g = queue.top().second;
+    queue.pop();
+    if (in_disk.count(g)) continue;
+    int shared = 0;
+    bool new_vertex = false;
+    for (int k = 0; k < 3; ++k) {
+      const int32_t h = across(g, k);
+      if (h >= 0 && in_disk.count(h)) ++shared;
+      if (!disk_vertices.count(mesh.triangles[g][k])) new_vertex = true;
+    }
+    if ((shared == 1 && new_vertex) || shared == 2) add(g);
+  }
+  std::sort(disk.begin(), disk.end());
+  return disk;
+}
+
+}  // namespace
+
+BaseSurface::BaseSurface(const TriMesh& base) : mesh(base) {
+  vertex_normals = meshquilt::vertex_normals(base);
+  face_normals.resize(base.num_faces());
+  face_areas.resize(base.num_faces());
+  vertex_faces.resize(base.num_vertices());
+  face_across = face_neighbors(base);
+  edges.resize(base.num_vertices());
+  diagonal = glm::length(bounding_box(base.positions).extent());
+  for (size_t f = 0; f < base.num_faces(); ++f) {
+    const Tri& t = base.triangles[f];
+    const Vec3 n = glm::cross(base.positions[t[1]] - base.positions[t[0]], base.positions[t[2]] - base.positions[t[0]]);
+    const double len = glm::length(n);
+    face_areas[f] = 0.5 * len;
+    face_normals[f] = len > 0.0 ? n / len : Vec3(0.0);
+    area += face_areas[f];
+    for (int k = 0; k < 3; ++k) {
+      vertex_faces[t[k]].push_back(static_cast<int32_t>(f));
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      const double length = glm::distance(base.positions[a], base.positions[b]);
+      // Each undirected edge once per side; duplicates from the second face are harmless.
+      edges[a].emplace_back(b, length);
+      edges[b].emplace_back(a, length);
+    }
+  }
+}
+
+Vec3 BaseSurface::position(const SurfacePoint& p) const {
+  const Tri& t = mesh.triangles[p.face];
+  return (1.0 - p.bary.x - p.bary.y) * mesh.positions[t[0]] + p.bary.x * mesh.positions[t[1]] +
+         p.bary.y * mesh.positions[t[2]];
+}
+
+Vec3 BaseSurface::normal(const SurfacePoint& p) const {
+  const Tri& t = mesh.triangles[p.face];
+  const Vec3 n = (1.0 - p.bary.x - p.bary.y) * vertex_normals[t[0]] + p.bary.x * vertex_normals[t[1]] +
+                 p.bary.y * vertex_normals[t[2]];
+  const double len = glm::length(n);
+  return len > 0.0 ? n / len : face_normals[p.face];
+}
+
+glm::dvec2 SurfacePatch::to_plane(const SurfacePoint& p) const {
+  const int32_t f = face_index(p.face);
+  const int32_t* v = &local_vertex_of_face_[3 * static_cast<size_t>(f)];
+  return (1.0 - p.bary.x - p.bary.y) * uv[v[0]] + p.bary.x * uv[v[1]] + p.bary.y * uv[v[2]];
+}
+
+int32_t SurfacePatch::face_index(int32_t base_face) const {
+  const auto it = std::lower_bound(sorted_faces_.begin(), sorted_faces_.end(), base_face);
+  if (it == sorted_faces_.end() || *it != base_face) return -1;
+  return sorted_positions_[it - sorted_faces_.begin()];
+}
+
+void SurfacePatch::transform(double angle, double scale) {
+  const double c = std::cos(angle) * scale, s = std::sin(angle) * scale;
+  for (glm::dvec2& p : uv) p = {c * p.x - s * p.y, s * p.x + c * p.y};
+}
+
+void SurfacePatch::index() {
+  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+  for (const glm::dvec2& p : uv) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double side = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
+  // About two faces per grid cell.
+  const int n = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(faces.size()) / 2.0)), 1, 512);
+  grid_cell_ = side / n * (1.0 + 1e-9);
+  grid_lo_ = lo;
+  grid_nx_ = std::max(1, static_cast<int>(std::ceil((hi.x - lo.x) / grid_cell_)) + 1);
+  grid_ny_ = std::max(1, static_cast<int>(std::ceil((hi.y - lo.y) / grid_cell_)) + 1);
+  std::vector<std::vector<int32_t>> cells(static_cast<size_t>(grid_nx_) * grid_ny_);
+  for (size_t f = 0; f < faces.size(); ++f) {
+    glm::dvec2 a(std::numeric_limits<double>::max()), b(std::numeric_limits<double>::lowest());
+    for (int k = 0; k < 3; ++k) {
+      a = glm::min(a, uv[local_vertex_of_face_[3 * f + k]]);
+      b = glm::max(b, uv[local_vertex_of_face_[3 * f + k]]);
+    }
+    const int x0 = static_cast<int>((a.x - lo.x) / grid_cell_), x1 = static_cast<int>((b.x - lo.x) / grid_cell_);
+    const int y0 = static_cast<int>((a.y - lo.y) / grid_cell_), y1 = static_cast<int>((b.y - lo.y) / grid_cell_);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) cells[static_cast<size_t>(y) * grid_nx_ + x].push_back(static_cast<int32_t>(f));
+  }
+  grid_offsets_.assign(1, 0);
+  grid_faces_.clear();
+  for (const auto& cell : cells) {
+    grid_faces_.insert(grid_faces_.end(), cell.begin(), cell.end());
+    grid_offsets_.push_back(static_cast<int32_t>(grid_faces_.size()));
+  }
+}
+
+std::optional<SurfacePoint> SurfacePatch::locate(const glm::dvec2& p) const {
+  const double gx = (p.x - grid_lo_.x) / grid_cell_, gy = (p.y - grid_lo_.y) / grid_cell_;
+  if (!(gx >= 0.0 && gy >= 0.0 && gx < grid_nx_ && gy < grid_ny_)) return std::nullopt;
+  const size_t cell = static_cast<size_t>(gy) * grid_nx_ + static_cast<size_t>(gx);
+  constexpr double kSlack = 1e-12;
+  for (int32_t k = grid_offsets_[cell]; k < grid_offsets_[cell + 1]; ++k) {
+    const int32_t f = grid_faces_[k];
+    const int32_t* v = &local_vertex_of_face_[3 * static_cast<size_t>(f)];
+    const glm::dvec2 b = plane_barycentric(p, uv[v[0]], uv[v[1]], uv[v[2]]);
+    if (b.x >= -kSlack && b.y >= -kSlack && b.x + b.y <= 1.0 + kSlack)
+      return SurfacePoint{faces[f], glm::clamp(b, 0.0, 1.0)};
+  }
+  return std::nullopt;
+}
+
+SurfacePoint SurfacePatch::nearest(const glm::dvec2& p) const {
+  double best = std::numeric_limits<double>::max();
+  SurfacePoint result;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const int32_t* v = &local_vertex_of_face_[3 * f];
+    const glm::dvec2 b = clamped_barycentric(p, uv[v[0]], uv[v[1]], uv[v[2]]);
+    const glm::dvec2 q = (1.0 - b.x - b.y) * uv[v[0]] + b.x * uv[v[1]] + b.y * uv[v[2]];
+    const double d = glm::dot(p - q, p - q);
+    if (d < best) {
+      best = d;
+      result = {faces[f], b};
+    }
+  }
+  return result;
+}
+
+std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std::vector<int32_t>& faces,
+                                             const std::vector<int32_t>& corner_vertex,
+                                             const std::vector<int32_t>& vertex_base) {
+  const TriMesh& mesh = base.mesh;
+  const int32_t n = static_cast<int32_t>(vertex_base.size());
+  // LSCM: per face, grad v = rot90(grad u), two rows weighted by sqrt(area), in the face's own
+  // orthonormal frame (x along its first edge, normal out of the surface).
+  const int32_t pin_a = corner_vertex[0];
+  int32_t pin_b = corner_vertex[1];
+  {
+    double far = -1.0;
+    for (int32_t k = 0; k < n; ++k) {
+      const double d = glm::distance(mesh.positions[vertex_base[k]], mesh.positions[vertex_base[pin_a]]);
+      if (d > far) {
+        far = d;
+        pin_b = k;
+      }
+    }
+  }
+  // Unknown index of (vertex, coordinate); pinned ones map to -1.
+  std::vector<int32_t> column(2 * static_cast<size_t>(n), -1);
+  int32_t unknowns = 0;
+  for (int32_t k = 0; k < n; ++k)
+    if (k != pin_a && k != pin_b) {
+      column[k] = unknowns++;
+      column[n + k] = unknowns++;
+    }
+  const double pinned_value[4] = {0.0, 0.0, 1.0, 0.0};  // u_a, v_a, u_b, v_b
+  const auto pinned = [&](int32_t index) -> double {
+    const int32_t k = index % n, coordinate = index / n;
+    return pinned_value[(k == pin_a ? 0 : 2) + coordinate];
+  };
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<double> rhs;
+  int32_t row = 0;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const Tri& t = mesh.triangles[faces[f]];
+    const Vec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+    const double area = base.face_areas[faces[f]];
+    if (area <= 0.0) continue;
+    const Vec3 e1 = glm::normalize(p1 - p0);
+    const Vec3 e2 = glm::normalize(glm::cross(glm::cross(p1 - p0, p2 - p0), e1));
+    const glm::dvec2 q[3] = {glm::dvec2(0.0), glm::dvec2(glm::length(p1 - p0), 0.0),
+                             glm::dvec2(glm::dot(p2 - p0, e1), glm::dot(p2 - p0, e2))};
+    const double weight = std::sqrt(area);
+    double row_rhs[2] = {0.0, 0.0};
+    for (int k = 0; k < 3; ++k) {
+      // Gradient of the k-th hat function: rot90(q[k+2] - q[k+1]) / (2 area).
+      const glm::dvec2 edge = q[(k + 2) % 3] - q[(k + 1) % 3];
+      const glm::dvec2 g = glm::dvec2(-edge.y, edge.x) / (2.0 * area) * weight;
+      const int32_t vertex = corner_vertex[3 * f + k];
+      // Row 0: dv/dx + du/dy = 0; row 1: dv/dy - du/dx = 0.
+      const double coefficient[2][2] = {{g.y, g.x}, {-g.x, g.y}};  // [row][u or v]
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) {
+          const int32_t index = c * n + vertex;
+          if (column[index] >= 0)
+            triplets.emplace_back(row + r, column[index], coefficient[r][c]);
+          else
+            row_rhs[r] -= coefficient[r][c] * pinned(index);
+        }
+    }
+    rhs.push_back(row_rhs[0]);
+    rhs.push_back(row_rhs[1]);
+    row += 2;
+  }
+  std::vector<double> solution(static_cast<size_t>(unknowns), 0.0);
+  if (unknowns > 0) {
+    Eigen::SparseMatrix<double> A(row, unknowns);
+    A.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), static_cast<Eigen::Index>(rhs.size()));
+    const Eigen::SparseMatrix<double> normal = A.transpose() * A;
+    const Eigen::MatrixXd x = solve_positive_definite(normal, A.transpose() * b, "conformal map");
+    for (int32_t k = 0; k < unknowns; ++k) solution[k] = x(k, 0);
+  }
+  std::vector<glm::dvec2> uv(static_cast<size_t>(n));
+  for (int32_t k = 0; k < n; ++k) {
+    for (int c = 0; c < 2; ++c) {
+      const int32_t index = c * n + k;
+      uv[k][c] = column[index] >= 0 ? solution[column[index]] : pinned(index);
+    }
+  }
+
+  return uv;
+}
+
+SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius) {
+  const TriMesh& mesh = base.mesh;
+  SurfacePatch patch;
+  patch.radius = radius;
+
+  // Dijkstra along edges from the seed face's corners.
+  std::unordered_map<int32_t, double> distance;
+  using Entry = std::pair<double, int32_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  const Vec3 origin = base.position(seed);
+  for (int32_t v : mesh.triangles[seed.face]) {
+    const double d = glm::distance(origin, mesh.positions[v]);
+    auto [it, fresh] = distance.emplace(v, d);
+    if (fresh || d < it->second) it->second = d;
+    queue.emplace(d, v);
+  }
+  std::vector<int32_t> reached;
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v]) continue;
+    reached.push_back(v);
+    for (const auto& [w, length] : base.edges[v]) {
+      const double dw = d + length;
+      if (dw > radius) continue;
+      auto [it, fresh] = distance.emplace(w, dw);
+      if (!fresh && dw >= it->second) continue;
+      it->second = dw;
+      queue.emplace(dw, w);
+    }
+  }
+  // Faces of reached vertices (the seed face always).
+  std::vector<int32_t> faces{seed.face};
+  for (int32_t v : reached)
+    for (int32_t f : base.vertex_faces[v]) faces.push_back(f);
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  // Degenerate faces carry no conformal information and would make rows of zeros.
+  faces.erase(std::remove_if(faces.begin(), faces.end(),
+                             [&](int32_t f) { return f != seed.face && base.face_areas[f] <= 0.0; }),
+              faces.end());
+  // A ball that wraps around a handle or a thin part, or covers a closed component, is no disk,
+  // and a conformal map of it folds (36 of 60 full-size balls on genus-4 fertility at
+  // `--scale 0.13` were none): it is cut open where its fronts meet.
+  if (euler_characteristic(mesh, faces) != 1) faces = disk_within(base, faces, seed.face, distance);
+  patch.faces = faces;
+
+  std::unordered_map<int32_t, int32_t> local;
+  for (int32_t f : faces)
+    for (int32_t v : mesh.triangles[f])
+      if (local.emplace(v, static_cast<int32_t>(patch.vertices.size())).second) patch.vertices.push_back(v);
+  patch.local_vertex_of_face_.reserve(3 * faces.size());
+  for (int32_t f : faces)
+    for (int32_t v : mesh.triangles[f]) patch.local_vertex_of_face_.push_back(local[v]);
+  patch.sorted_faces_ = faces;
+  patch.sorted_positions_.resize(faces.size());
+  for (size_t k = 0; k < faces.size(); ++k) patch.sorted_positions_[k] = static_cast<int32_t>(k);
+
+  patch.uv = conformal_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices);
+
+  // Scale to the base's area, the seed at the origin; measure distortion and fold-overs.
+  double plane_area = 0.0;
+  std::vector<double> signed_areas(faces.size());
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const int32_t* v = &patch.local_vertex_of_face_[3 * f];
+    signed_areas[f] = 0.5 * cross2(patch.uv[v[1]] - patch.uv[v[0]], patch.uv[v[2]] - patch.uv[v[0]]);
+    plane_area += signed_areas[f];
+  }
+  double base_area = 0.0;
+  for (int32_t f : faces) base_area += base.face_areas[f];
+  const double scale = plane_area > 0.0 ? std::sqrt(base_area / plane_area) : 1.0;
+  for (glm::dvec2& p : patch.uv) p *= scale;
+  double lo = std::numeric_limits<double>::max(), hi = 0.0;
+  for (size_t f = 0; f < faces.size(); ++f) {
+    const double area = base.face_areas[faces[f]];
+    if (area <= 1e-12 * base_area) continue;
+    const double ratio = signed_areas[f] * scale * scale / area;
+    if (ratio <= 0.0) {
+      ++patch.flipped_faces;
+      continue;
+    }
+    lo = std::min(lo, ratio);
+    hi = std::max(hi, ratio);
+  }
+  patch.area_distortion = hi > 0.0 && lo < std::numeric_limits<double>::max() ? hi / lo : 1.0;
+  const glm::dvec2 seed_plane = patch.to_plane(seed);
+  for (glm::dvec2& p : patch.uv) p -= seed_plane;
+  return patch;
+}
+
+}  // namespace meshquilt

@@ -1,0 +1,47 @@
+#include "surface/element_placement.h"
+
+#include <algorithm>
+
+#include "spatial/intersecting_pairs.h"
+
+namespace meshquilt {
+
+int ElementPlacement::moved_elements() const {
+  return static_cast<int>(std::count(through_synthesis_map.begin(), through_synthesis_map.end(), 1));
+}
+
+ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::vector<LocalVertex>& vertices,
+                                const std::vector<Tri>& triangles, const std::vector<int32_t>& face_element,
+                                int rounds) {
+  ElementPlacement out;
+  const int32_t last = face_element.empty() ? -1 : *std::max_element(face_element.begin(), face_element.end());
+  out.through_synthesis_map.assign(static_cast<size_t>(last + 1), 0);
+  TriMesh mesh;
+  mesh.triangles = triangles;
+  mesh.positions.reserve(vertices.size());
+  for (const LocalVertex& v : vertices) mesh.positions.push_back(embedding.position(v.point, v.height));
+  if (embedding.has_synthesis_map()) {
+    std::vector<int32_t> vertex_element(vertices.size(), -1);
+    for (size_t f = 0; f < triangles.size(); ++f)
+      for (int32_t v : triangles[f]) vertex_element[v] = face_element[f];
+    for (int round = 0; round < rounds; ++round) {
+      std::vector<uint8_t> moving(out.through_synthesis_map.size(), 0);
+      bool any = false;
+      for (const auto& [a, b] :
+           intersecting_face_pairs(mesh, face_element, IntersectionScope::different_elements))
+        for (const int32_t e : {face_element[a], face_element[b]})
+          if (!out.through_synthesis_map[e]) {
+            moving[e] = out.through_synthesis_map[e] = 1;
+            any = true;
+          }
+      if (!any) break;
+      for (size_t v = 0; v < vertices.size(); ++v)
+        if (vertex_element[v] >= 0 && moving[vertex_element[v]])
+          mesh.positions[v] = embedding.position_during_synthesis(vertices[v].point, vertices[v].height);
+    }
+  }
+  out.positions = std::move(mesh.positions);
+  return out;
+}
+
+}  // namespace meshquilt

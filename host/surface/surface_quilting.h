@@ -1,0 +1,69 @@
+#pragma once
+//! Mesh quilting over an arbitrary base mesh (Section 3.1 of the mesh quilting paper): the driver
+//! that covers a surface. Cells are the base's triangles, split where they are large; each seed
+//! grows a local patch flattened by a conformal map, turned so the guidance field at the seed runs
+//! along the swatch's x axis, and the patch step (quilt/patch_step.h) runs in that plane. Output
+//! vertices live in local coordinates (base face, barycentrics, height), so every later patch sees
+//! them in its own plane; they are placed in space by an embedding (quilt/surface_embedding.h):
+//! a shell map by default, or displacement along interpolated vertex normals (Figure 8, left).
+
+#include <cstdint>
+
+#include "mesh/tri_mesh.h"
+#include "surface/guidance_field.h"
+#include "surface/surface_embedding.h"
+#include "quilt/quilt_options.h"
+
+namespace meshquilt {
+
+namespace engine {
+class Device;
+}
+
+struct SurfaceQuiltOptions : QuiltOptions {
+  //! The swatch's longer x-y side measures scale x the base's bounding-box diagonal.
+  double scale = 0.1;
+  //! Height of the layer in base units (0: the swatch's thickness at that scale).
+  double shell_height = 0.0;
+  //! A patch whose plane area over base area varies by more than this factor (max / min over its
+  //! triangles) is shrunk, with its output sub-patch (the paper's rule). A patch seeded again on
+  //! a cell that an earlier one left uncovered allows twice the distortion per earlier attempt.
+  double max_area_distortion = 4.0;
+  int max_shrinks = 4;  //!< shrink a patch at most this many times (by 0.75 each)
+  //! Places local coordinates in space; empty: displacement along vertex normals.
+  EmbeddingFactory embedding;
+};
+
+//! An output vertex in local coordinates: a base point and its height above it (base units).
+struct LocalVertex {
+  SurfacePoint point;
+  double height = 0.0;
+};
+
+//! A synthesized layer: the embedded mesh and where each of its vertices lies over the base.
+struct SurfaceQuilt {
+  TriMesh mesh;                    //!< with per-face element ids and sources
+  std::vector<LocalVertex> local;  //!< #V of mesh
+};
+
+//! What the surface driver adds to QuiltStats.
+struct SurfaceQuiltStats : QuiltStats {
+  int base_faces = 0;          //!< after welding
+  int shrunk_patches = 0;      //!< patches shrunk for distortion, fold-overs or closing up
+  int outside_vertices = 0;    //!< vertices placed outside their patch, put on its nearest face
+  double shell_height = 0.0;   //!< base units
+  double diagonal = 0.0;       //!< base bounding-box diagonal
+  double covered_area = 0.0;   //!< base area of processed cells that are not holes
+  double hole_area = 0.0;      //!< base area of hole cells
+  int intersecting_face_pairs = 0;  //!< face pairs of different elements meeting, before clean-up
+  int synthesis_map_elements = 0;   //!< elements placed through the map synthesis decided on (place_elements)
+};
+
+//! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field).
+//! \pre base prepared by prepare_base.
+//! \throw InputError for a degenerate swatch or a bad option; DeviceError, SolverError; Cancelled.
+SurfaceQuilt quilt_surface(const TriMesh& swatch, const TriMesh& base, const GuidanceField& field,
+                      engine::Device& device, const SurfaceQuiltOptions& options,
+                      SurfaceQuiltStats* stats = nullptr);
+
+}  // namespace meshquilt

@@ -1,0 +1,283 @@
+#!/usr/bin/env python3
+"""Checks that the docs keep up with the code.
+
+Usage:
+  python3 scripts/check_docs.py MESHQUILT_BINARY REPO_ROOT
+  python3 scripts/check_docs.py --self-test
+
+Fails (exit 1, one line per problem) when README.md has more than 200 lines, or when a long
+option printed by `MESHQUILT --help` or by `MESHQUILT <sub> [<sub> ...] --help` for any
+subcommand (found in the "Subcommands:" section of CLI11's help) is missing from docs/cli.md.
+An option counts as documented when it appears inside backticks (a code span or a fenced block)
+in docs/cli.md. On success prints "docs check: N options documented, README L lines".
+Python 3 standard library only.
+"""
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+README_MAX_LINES = 200
+
+# A long option name: --name, letters, digits, '-' and '_' (CLI11 prints a negated flag's default
+# after it in braces, --no-cleanup{false}, and a value's type after a space).
+LONG_OPTION = re.compile(r"--[A-Za-z0-9][A-Za-z0-9_-]*")
+# Section headers of CLI11's help: "Options:", "Subcommands:", "Positionals:", "[Option Group: x]".
+SECTION = re.compile(r"^(\S[^:]*):\s*$|^\[Option Group: .*\]\s*$")
+# Entries of a section start with a short indent (CLI11 writes two spaces); wrapped descriptions
+# are indented to the description column (30 by default), so deep lines are never entries.
+ENTRY_MAX_INDENT = 6
+
+
+def parse_help(text):
+    """Returns (long options, subcommand names) from one CLI11 help text."""
+    options, subcommands = [], []
+    section = None
+    for line in text.splitlines():
+        if not line.strip():
+            continue
+        header = SECTION.match(line)
+        if header:
+            section = (header.group(1) or "option group").strip().lower()
+            continue
+        indent = len(line) - len(line.lstrip(" "))
+        if indent == 0 or indent > ENTRY_MAX_INDENT:
+            continue
+        first = line.split()[0]
+        if section == "subcommands":
+            if not first.startswith("-") and first not in subcommands:
+                subcommands.append(first)
+        elif first.startswith("-"):
+            # The name column alone: "-o,--output", "--plane", "--no-cleanup{false}". Options named
+            # later on the line (Needs:, Excludes:, descriptions) are entries of their own.
+            for name in first.split(","):
+                match = LONG_OPTION.match(name)
+                if match and match.group(0) not in options:
+                    options.append(match.group(0))
+    return options, subcommands
+
+
+def collect_options(help_of):
+    """Walks every command from the top. help_of(path) returns the help text of `path` (a list of
+    subcommand names) or raises RuntimeError. Returns ({option: [command paths]}, problems)."""
+    found, problems = {}, []
+    queue, seen = [[]], set()
+    while queue:
+        path = queue.pop(0)
+        key = tuple(path)
+        if key in seen:
+            continue
+        seen.add(key)
+        try:
+            text = help_of(path)
+        except RuntimeError as error:
+            problems.append(str(error))
+            continue
+        options, subcommands = parse_help(text)
+        if not options:
+            problems.append("%s --help: no options found in its help" % " ".join(["meshquilt"] + path))
+        for option in options:
+            found.setdefault(option, []).append(" ".join(path) or "(top level)")
+        for sub in subcommands:
+            queue.append(path + [sub])
+    return found, problems
+
+
+def documented_options(markdown):
+    """Long options that appear inside backticks: inline code spans and fenced blocks."""
+    names = set()
+    fenced = re.compile(r"^(```|~~~).*?^\1", re.S | re.M)
+    for block in fenced.finditer(markdown):
+        names.update(LONG_OPTION.findall(block.group(0)))
+    rest = fenced.sub("", markdown)
+    for span in re.findall(r"(`+)(.+?)\1", rest, re.S):
+        names.update(LONG_OPTION.findall(span[1]))
+    return names
+
+
+def check(help_of, root):
+    problems = []
+    readme = root / "README.md"
+    readme_lines = 0
+    if readme.is_file():
+        readme_lines = len(readme.read_text(encoding="utf-8").splitlines())
+        if readme_lines > README_MAX_LINES:
+            problems.append("README.md: %d lines, more than %d" % (readme_lines, README_MAX_LINES))
+    else:
+        problems.append("README.md: missing")
+    cli_md = root / "docs" / "cli.md"
+    documented = set()
+    if cli_md.is_file():
+        documented = documented_options(cli_md.read_text(encoding="utf-8"))
+    else:
+        problems.append("docs/cli.md: missing")
+    found, help_problems = collect_options(help_of)
+    problems.extend(help_problems)
+    for option in sorted(found):
+        if option not in documented:
+            commands = ", ".join(found[option])
+            problems.append("docs/cli.md: `%s` (%s) is not documented in backticks" % (option, commands))
+    return problems, len(found), readme_lines
+
+
+def binary_help(binary):
+    def help_of(path):
+        command = [binary] + path + ["--help"]
+        try:
+            run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
+        except (OSError, subprocess.TimeoutExpired) as error:
+            raise RuntimeError("%s: %s" % (" ".join(command), error))
+        text = run.stdout.decode("utf-8", "replace")
+        if run.returncode != 0:
+            first = text.strip().splitlines()[:1]
+            raise RuntimeError("%s: exit code %d%s" % (" ".join(command), run.returncode,
+                                                        (": " + first[0]) if first else ""))
+        return text
+    return help_of
+
+
+# CLI11 help as 2.1 (defaults after '=', negated flags with their value in braces) and 2.3
+# (defaults in brackets) print it, for --self-test.
+SAMPLE_TOP = """\
+meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting
+Usage: meshquilt [OPTIONS] SUBCOMMAND
+
+Options:
+  -h,--help                   Print this help message and exit
+
+Subcommands:
+  swatch                      writes a built-in swatch: chainmail, weave, wire, fruit, nuts or heightfield
+  synth                       Grow a geometric texture over a plane or a base mesh by mesh quilting
+  a-very-long-subcommand-name-past-the-column
+                              a description on its own line
+"""
+SAMPLE_SYNTH_21 = """\
+Grow a geometric texture over a plane or a base mesh by mesh quilting
+Usage: meshquilt synth [OPTIONS]
+
+Options:
+  -h,--help                   Print this help message and exit
+  --swatch TEXT               swatch mesh (OBJ, PLY, OFF, STL); default: a built-in chain mail
+  --plane TEXT=4x4            output size WxH in swatch extents
+  --no-cleanup{false}         keep elements that could not be made whole
+  --write-texture TEXT        with --base: write the result in texture space, for `meshquilt embed` over an edited base
+  -o,--output TEXT=quilt.ply  output mesh (.ply with element ids, .obj with groups, .off, .stl)
+"""
+SAMPLE_SWATCH_23 = """\
+writes a built-in swatch: chainmail, weave, wire, fruit, nuts or heightfield
+Usage: meshquilt swatch [OPTIONS] SUBCOMMAND
+
+Options:
+  -h,--help                   Print this help message and exit
+
+Subcommands:
+  chainmail                   European 4-in-1 chain mail: tilted rings, each linked through four neighbours
+"""
+SAMPLE_CHAINMAIL_23 = """\
+European 4-in-1 chain mail
+Usage: meshquilt swatch chainmail [OPTIONS]
+
+Options:
+  -h,--help                   Print this help message and exit
+  -o,--output TEXT REQUIRED   output mesh (.ply .obj .off .stl)
+  --rows INT [8]              ring rows along y (even)
+  --preset TEXT:{default,small} [default]
+                              starting sizes: default (paper-sized) or small
+  --region FLOAT x 4 Needs: --plane
+                              with --plane: cover this x-y rectangle
+  --no-distortion-min{false}  with --embed shell: keep the original shell map
+"""
+SAMPLE_LONG = """\
+x
+Usage: meshquilt a-very-long-subcommand-name-past-the-column [OPTIONS]
+
+Positionals:
+  MESH TEXT REQUIRED          mesh to inspect (.obj .ply .off .stl)
+
+Options:
+  -h,--help                   Print this help message and exit
+"""
+SAMPLE_CLI_MD = """\
+# sample
+| option | |
+| --- | --- |
+| `--swatch FILE` | the swatch |
+| `--plane WxH` | a plane |
+| `-o`, `--output` | output |
+Mentioned without backticks: --rows, so it does not count.
+```
+meshquilt synth --no-cleanup --write-texture t.mqt
+```
+`--preset`, `--region X0,Y0,X1,Y1`, `--help`.
+"""
+
+
+def self_test():
+    failures = []
+
+    def expect(what, got, want):
+        if got != want:
+            failures.append("%s: got %r, want %r" % (what, got, want))
+
+    expect("top", parse_help(SAMPLE_TOP),
+           (["--help"], ["swatch", "synth", "a-very-long-subcommand-name-past-the-column"]))
+    expect("synth (CLI11 2.1)", parse_help(SAMPLE_SYNTH_21),
+           (["--help", "--swatch", "--plane", "--no-cleanup", "--write-texture", "--output"], []))
+    expect("swatch (CLI11 2.3)", parse_help(SAMPLE_SWATCH_23), (["--help"], ["chainmail"]))
+    expect("chainmail (CLI11 2.3)", parse_help(SAMPLE_CHAINMAIL_23),
+           (["--help", "--output", "--rows", "--preset", "--region", "--no-distortion-min"], []))
+    expect("positionals", parse_help(SAMPLE_LONG), (["--help"], []))
+
+    helps = {
+        (): SAMPLE_TOP,
+        ("synth",): SAMPLE_SYNTH_21,
+        ("swatch",): SAMPLE_SWATCH_23,
+        ("swatch", "chainmail"): SAMPLE_CHAINMAIL_23,
+        ("a-very-long-subcommand-name-past-the-column",): SAMPLE_LONG,
+    }
+
+    def help_of(path):
+        if tuple(path) not in helps:
+            raise RuntimeError("meshquilt %s --help: exit code 2" % " ".join(path))
+        return helps[tuple(path)]
+
+    found, problems = collect_options(help_of)
+    expect("walk problems", problems, [])
+    expect("walk options", sorted(found),
+           sorted(["--help", "--swatch", "--plane", "--no-cleanup", "--write-texture", "--output", "--rows",
+                   "--preset", "--region", "--no-distortion-min"]))
+    expect("walk commands of --rows", found.get("--rows"), ["swatch chainmail"])
+
+    documented = documented_options(SAMPLE_CLI_MD)
+    expect("documented", sorted(documented),
+           sorted(["--swatch", "--plane", "--output", "--no-cleanup", "--write-texture", "--preset", "--region",
+                   "--help"]))
+    missing = sorted(set(found) - documented)
+    expect("missing", missing, ["--no-distortion-min", "--rows"])
+
+    if failures:
+        for failure in failures:
+            print("self-test: " + failure)
+        return 1
+    print("self-test: ok")
+    return 0
+
+
+def main(argv):
+    if len(argv) == 2 and argv[1] == "--self-test":
+        return self_test()
+    if len(argv) != 3:
+        print("usage: python3 scripts/check_docs.py MESHQUILT_BINARY REPO_ROOT | --self-test", file=sys.stderr)
+        return 2
+    problems, options, readme_lines = check(binary_help(argv[1]), Path(argv[2]))
+    if problems:
+        for problem in problems:
+            print(problem)
+        return 1
+    print("docs check: %d options documented, README %d lines" % (options, readme_lines))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,4 +1,0 @@
-meshquilt_test(inspect_topology_test SOURCES inspect_topology_test.cpp LIBS meshquilt_inspect meshquilt_swatch meshquilt_spatial meshquilt_mesh)
-meshquilt_test(inspect_coverage_test SOURCES inspect_coverage_test.cpp LIBS meshquilt_inspect meshquilt_spatial meshquilt_mesh)
-meshquilt_test(inspect_cli_test SOURCES inspect_cli_test.cpp LIBS meshquilt_mesh nlohmann_json::nlohmann_json)
-add_dependencies(inspect_cli_test meshquilt)

@@ -1,5 +1,0 @@
-meshquilt_test(face_bvh_test SOURCES face_bvh_test.cpp LIBS meshquilt_spatial meshquilt_mesh)
-meshquilt_test(triangle_intersection_test SOURCES triangle_intersection_test.cpp LIBS meshquilt_spatial meshquilt_mesh)
-meshquilt_test(near_face_grid_test SOURCES near_face_grid_test.cpp LIBS meshquilt_spatial meshquilt_mesh)
-meshquilt_test(normal_bins_test SOURCES normal_bins_test.cpp LIBS meshquilt_spatial meshquilt_mesh)
-meshquilt_test(near_face_grid_cache_test SOURCES near_face_grid_cache_test.cpp LIBS meshquilt_spatial meshquilt_mesh)
