@@ -86,14 +86,17 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
   };
 }
 
-}  // namespace
+// The options parsed, every option and output path checked before any work starts.
+struct SynthSettings {
+  double width = 0.0, height = 0.0;  // the plane's size (planar jobs)
+  engine::BackendChoice backend;
+  ProgressMode progress_mode;
+};
 
-void run_synth(const SynthArgs& args) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+SynthSettings check_synth_args(const SynthArgs& args) {
+  SynthSettings settings;
   const bool curved = !args.base.empty();
-  double width = 0.0, height = 0.0;
-  if (!curved) parse_plane(args.plane, &width, &height);
+  if (!curved) parse_plane(args.plane, &settings.width, &settings.height);
   if (curved && !(args.scale > 0.0 && args.scale <= 10.0))
     throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ExitCode::invalid_option);
   if (curved && !(args.shell_height >= 0.0 && std::isfinite(args.shell_height)))
@@ -102,25 +105,135 @@ void run_synth(const SynthArgs& args) {
     throw InputError("--field, --write-field and --write-texture need --base", ExitCode::invalid_option);
   if (args.embed != "shell" && args.embed != "normal")
     throw InputError("--embed: expected shell or normal, got '" + args.embed + "'", ExitCode::invalid_option);
-  const engine::BackendChoice backend = engine::parse_backend_choice(args.backend);
-  const ProgressMode progress_mode = parse_progress_mode(args.progress);
+  settings.backend = engine::parse_backend_choice(args.backend);
+  settings.progress_mode = parse_progress_mode(args.progress);
   if (args.cells < 4 || args.cells > 256)
     throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ExitCode::invalid_option);
-  const std::filesystem::path output = args.output;
-  check_mesh_extension(output);
-  check_writable(output);
+  check_mesh_extension(args.output);
+  check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   if (!args.write_field.empty()) check_writable(args.write_field);
   if (!args.write_texture.empty()) check_writable(args.write_texture);
-  RenderOptions preview_options;
-  preview_options.width = 900;
-  preview_options.height = 700;
-  preview_options.mode = RenderMode::elements;
   if (!args.preview.empty()) {
     if (std::filesystem::path(args.preview).extension() != ".png")
       throw IoError(ExitCode::unknown_format, args.preview + ": previews are PNG files (use .png)");
     check_writable(args.preview);
   }
+  return settings;
+}
+
+// What a quilting driver hands to the writers.
+struct SynthResult {
+  TriMesh mesh;
+  nlohmann::json summary;
+  std::vector<LocalVertex> local;  // texture-space coordinates (curved jobs)
+  ShellTexture shell_texture;      // the shell map's texture (with --write-texture)
+};
+
+void add_curved_summary(const SynthArgs& args, const SurfaceQuiltStats& stats, const ShellReport& shell_report,
+                        nlohmann::json& summary) {
+  summary["embed"] = args.embed;
+  summary["intersecting_face_pairs"] = stats.intersecting_face_pairs;
+  summary["synthesis_map_elements"] = stats.synthesis_map_elements;
+  if (args.embed == "shell") {
+    summary["stretch_l2_initial"] = shell_report.stretch_initial;
+    summary["stretch_l2_final"] = shell_report.stretch_final;
+    summary["shell_tets"] = shell_report.tets;
+    summary["shell_charts"] = shell_report.charts;
+    summary["shell_reduced_vertices"] = shell_report.reduced_vertices;
+    summary["shell_invalid_prisms"] = shell_report.invalid_prisms;
+    summary["shell_offset_crossings"] = shell_report.offset_intersections;
+    summary["stages"]["atlas"] = shell_report.seconds_atlas;
+    summary["stages"]["shell_build"] = shell_report.seconds_shell;
+    summary["stages"]["stretch"] = shell_report.seconds_stretch;
+  }
+  summary["base"] = args.base;
+  summary["base_faces"] = stats.base_faces;
+  summary["scale"] = args.scale;
+  summary["shrunk_patches"] = stats.shrunk_patches;
+  summary["outside_vertices"] = stats.outside_vertices;
+  summary["shell_height"] = stats.shell_height;
+  summary["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;
+  summary["hole_area"] = stats.hole_area;
+  summary["covered_area"] = stats.covered_area;
+  summary["field"] = args.field.empty() ? "default" : args.field;
+}
+
+SynthResult synth_curved(const SynthArgs& args, const TriMesh& swatch, const TriMesh& base,
+                         const std::vector<FieldConstraint>& constraints, engine::Device& device,
+                         const QuiltOptions& common) {
+  SurfaceQuiltOptions options;
+  static_cast<QuiltOptions&>(options) = common;
+  options.scale = args.scale;
+  options.shell_height = args.shell_height;
+  const BaseSurface surface(base);
+  const GuidanceField field = interpolate_field(surface, constraints);
+  if (!args.write_field.empty()) write_field_obj(surface, field, 0.5 * mean_edge_length(base), args.write_field);
+  ShellEmbeddingOptions shell_options;
+  shell_options.minimize_stretch = args.distortion_min;
+  shell_options.stretch.seed = args.seed;
+  SynthResult result;
+  ShellReport shell_report;
+  if (args.embed == "shell")
+    options.embedding = [&](const BaseSurface& surface_base, double shell_height) {
+      auto embedding = build_shell_embedding(device, surface_base, shell_height, shell_options, &shell_report);
+      if (!args.write_texture.empty()) result.shell_texture = embedding->texture();
+      return std::unique_ptr<SurfaceEmbedding>(std::move(embedding));
+    };
+  SurfaceQuiltStats stats;
+  SurfaceQuilt quilt = quilt_surface(swatch, base, field, device, options, &stats);
+  result.mesh = std::move(quilt.mesh);
+  result.local = std::move(quilt.local);
+  result.summary = quilt_summary(stats);
+  add_curved_summary(args, stats, shell_report, result.summary);
+  return result;
+}
+
+SynthResult synth_planar(const TriMesh& swatch, double width, double height, engine::Device& device,
+                         const QuiltOptions& common) {
+  PlanarQuiltOptions options;
+  static_cast<QuiltOptions&>(options) = common;
+  options.width = width;
+  options.height = height;
+  QuiltStats stats;
+  SynthResult result;
+  result.mesh = quilt_plane(swatch, device, options, &stats);
+  result.summary = quilt_summary(stats);
+  result.summary["plane"] = {width, height};
+  result.summary["plane_rect"] = {0.0, 0.0, stats.plane_extent.x, stats.plane_extent.y};
+  return result;
+}
+
+// The preview: over a base, the base under its texture in plain grey (an element id after the
+// output's).
+void write_synth_preview(const TriMesh& result, const TriMesh* base, const std::string& file) {
+  RenderOptions preview_options;
+  preview_options.width = 900;
+  preview_options.height = 700;
+  preview_options.mode = RenderMode::elements;
+  if (!base) {
+    write_preview(result, file, preview_options);
+    return;
+  }
+  TriMesh shown = join_elements({result, *base});
+  int32_t base_id = 0;
+  for (int32_t e : result.elements) base_id = std::max(base_id, e + 1);
+  for (size_t f = result.num_faces(); f < shown.num_faces(); ++f) shown.elements[f] = base_id;
+  for (size_t f = 0; f < result.num_faces(); ++f) shown.elements[f] = result.elements[f];
+  preview_options.plain_element = base_id;
+  write_preview(shown, file, preview_options);
+}
+
+}  // namespace
+
+void run_synth(const SynthArgs& args) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const bool curved = !args.base.empty();
+  const SynthSettings settings = check_synth_args(args);
+  const double width = settings.width, height = settings.height;
+  const ProgressMode progress_mode = settings.progress_mode;
+  const std::filesystem::path output = args.output;
 
   const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
   // Oriented here as well as in the drivers, so a degenerate swatch is reported by file name.
@@ -135,7 +248,7 @@ void run_synth(const SynthArgs& args) {
   }
 
   std::string note;
-  std::unique_ptr<engine::Device> device = engine::open_device(backend, &note);
+  std::unique_ptr<engine::Device> device = engine::open_device(settings.backend, &note);
   if (!note.empty()) std::cerr << "meshquilt: " << note << "\n";
 
   ProgressReporter progress(progress_mode, "synth");
@@ -150,90 +263,17 @@ void run_synth(const SynthArgs& args) {
     check_interrupted();  // stops after the current patch until the scheduler polls options.cancel
     progress.update(p.covered_area, p.total_area);
   };
-
-  TriMesh result;
-  nlohmann::json summary;
-  std::vector<LocalVertex> local;
-  ShellTexture shell_texture;
-  ShellReport shell_report;
-  if (curved) {
-    SurfaceQuiltOptions options;
-    static_cast<QuiltOptions&>(options) = common;
-    options.scale = args.scale;
-    options.shell_height = args.shell_height;
-    const BaseSurface surface(base);
-    const GuidanceField field = interpolate_field(surface, constraints);
-    if (!args.write_field.empty()) write_field_obj(surface, field, 0.5 * mean_edge_length(base), args.write_field);
-    ShellEmbeddingOptions shell_options;
-    shell_options.minimize_stretch = args.distortion_min;
-    shell_options.stretch.seed = args.seed;
-    if (args.embed == "shell")
-      options.embedding = [&](const BaseSurface& surface_base, double shell_height) {
-        auto embedding = build_shell_embedding(*device, surface_base, shell_height, shell_options, &shell_report);
-        if (!args.write_texture.empty()) shell_texture = embedding->texture();
-        return std::unique_ptr<SurfaceEmbedding>(std::move(embedding));
-      };
-    SurfaceQuiltStats stats;
-    SurfaceQuilt quilt = quilt_surface(swatch, base, field, *device, options, &stats);
-    result = std::move(quilt.mesh);
-    local = std::move(quilt.local);
-    summary = quilt_summary(stats);
-    summary["embed"] = args.embed;
-    summary["intersecting_face_pairs"] = stats.intersecting_face_pairs;
-    summary["synthesis_map_elements"] = stats.synthesis_map_elements;
-    if (args.embed == "shell") {
-      summary["stretch_l2_initial"] = shell_report.stretch_initial;
-      summary["stretch_l2_final"] = shell_report.stretch_final;
-      summary["shell_tets"] = shell_report.tets;
-      summary["shell_charts"] = shell_report.charts;
-      summary["shell_reduced_vertices"] = shell_report.reduced_vertices;
-      summary["shell_invalid_prisms"] = shell_report.invalid_prisms;
-      summary["shell_offset_crossings"] = shell_report.offset_intersections;
-      summary["stages"]["atlas"] = shell_report.seconds_atlas;
-      summary["stages"]["shell_build"] = shell_report.seconds_shell;
-      summary["stages"]["stretch"] = shell_report.seconds_stretch;
-    }
-    summary["base"] = args.base;
-    summary["base_faces"] = stats.base_faces;
-    summary["scale"] = args.scale;
-    summary["shrunk_patches"] = stats.shrunk_patches;
-    summary["outside_vertices"] = stats.outside_vertices;
-    summary["shell_height"] = stats.shell_height;
-    summary["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;
-    summary["hole_area"] = stats.hole_area;
-    summary["covered_area"] = stats.covered_area;
-    summary["field"] = args.field.empty() ? "default" : args.field;
-  } else {
-    PlanarQuiltOptions options;
-    static_cast<QuiltOptions&>(options) = common;
-    options.width = width;
-    options.height = height;
-    QuiltStats stats;
-    result = quilt_plane(swatch, *device, options, &stats);
-    summary = quilt_summary(stats);
-    summary["plane"] = {width, height};
-    summary["plane_rect"] = {0.0, 0.0, stats.plane_extent.x, stats.plane_extent.y};
-  }
+  SynthResult synth = curved ? synth_curved(args, swatch, base, constraints, *device, common)
+                             : synth_planar(swatch, width, height, *device, common);
+  const TriMesh& result = synth.mesh;
+  nlohmann::json& summary = synth.summary;
 
   const auto write_start = Clock::now();
   check_interrupted();
   write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
   if (!args.write_texture.empty())
-    write_texture_file(args.write_texture, make_quilt_texture(base, result, local, shell_texture));
-  if (!args.preview.empty()) {
-    if (curved) {
-      // The base under its texture, in plain grey: an element id after the output's.
-      TriMesh shown = join_elements({result, base});
-      int32_t base_id = 0;
-      for (int32_t e : result.elements) base_id = std::max(base_id, e + 1);
-      for (size_t f = result.num_faces(); f < shown.num_faces(); ++f) shown.elements[f] = base_id;
-      for (size_t f = 0; f < result.num_faces(); ++f) shown.elements[f] = result.elements[f];
-      preview_options.plain_element = base_id;
-      write_preview(shown, args.preview, preview_options);
-    } else {
-      write_preview(result, args.preview, preview_options);
-    }
-  }
+    write_texture_file(args.write_texture, make_quilt_texture(base, result, synth.local, synth.shell_texture));
+  if (!args.preview.empty()) write_synth_preview(result, curved ? &base : nullptr, args.preview);
   summary["stages"]["write"] = std::chrono::duration<double>(Clock::now() - write_start).count();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
 

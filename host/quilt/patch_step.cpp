@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <optional>
+#include <functional>
 #include <unordered_set>
 
 #include <glm/geometric.hpp>
@@ -14,6 +14,7 @@
 #include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
+#include "quilt/layer_collisions.h"
 #include "quilt/quilt_policies.h"
 #include "quilt/stage_timer.h"
 
@@ -257,6 +258,187 @@ int PlaneGrid::row(double y) const {
   return std::clamp(static_cast<int>(std::floor((y - origin.y) / cell)), 0, ny - 1);
 }
 
+namespace {
+
+// The swatch placed at the patch's translation: the inputs (elements whose centre lies in the
+// domain; on a surface, that lie wholly in it) and those left out. Those left out still lie over
+// the patch's cells: the swatch is not empty there, so those cells need kept geometry near them
+// to count as covered (see covered_cells), and a later patch seeded there places them.
+struct PlacedSwatch {
+  std::vector<TriMesh> inputs, left_out;
+  std::vector<int32_t> input_source;  // the swatch element of each input
+};
+
+PlacedSwatch place_swatch(const QuiltSwatch& swatch, const PatchRequest& request, const glm::dvec2& t) {
+  PlacedSwatch placed;
+  for (size_t k = 0; k < swatch.elements.size(); ++k) {
+    const Rect2& b = swatch.element_bounds[k];
+    TriMesh placed_element = translated(swatch.elements[k], t);
+    const bool inside =
+        request.inside_domain(0.5 * (b.lo + b.hi) + t) &&
+        (!request.whole_inputs_only ||
+         std::all_of(placed_element.positions.begin(), placed_element.positions.end(),
+                     [&](const Vec3& p) { return request.inside_domain(glm::dvec2(p)); }));
+    if (!inside) {
+      placed.left_out.push_back(std::move(placed_element));
+      continue;
+    }
+    placed.inputs.push_back(std::move(placed_element));
+    placed.input_source.push_back(static_cast<int32_t>(k));
+  }
+  return placed;
+}
+
+// What the merge steps of one patch share.
+struct MergeContext {
+  std::vector<PlaneElement>& layer;
+  const std::vector<int32_t>& affected;  // the layer element of each output element of the patch
+  PlacedSwatch& swatch;
+  const Correspondences& corr;
+  const std::function<bool(const Vec3&)>& in_overlap;
+  const MergeOptions& merging;
+  LayerCollisions& collisions;
+  MergeCounts& counts;
+  // Shapes before the deformation, per output element (empty: not deformed).
+  std::vector<std::vector<Vec3>> undeformed;
+  std::vector<uint8_t> out_partnered;  // per output element
+  // What stands for each input in the layer once merged (see covered_cells); -1: nothing.
+  std::vector<int32_t> representative;
+
+  PlaneElement& element(int32_t out) { return layer[affected[out]]; }
+  void reshaped(int32_t out) {
+    collisions.forget(affected[out]);
+    element(out).bounds = xy_bounds(element(out).mesh);
+  }
+};
+
+// A deformation that pushes an output element into a neighbour is undone: the element keeps its
+// shape and the merge works from there. The shape before is kept: a partner that is not merged
+// after all gets it back, since the deformation only served the seam (repeated patches would
+// otherwise bend it again and again).
+void keep_deformations(MergeContext& ctx, std::vector<TriMesh>& outs) {
+  ctx.undeformed.assign(outs.size(), {});
+  for (size_t o = 0; o < outs.size(); ++o) {
+    const auto out = static_cast<int32_t>(o);
+    PlaneElement& e = ctx.element(out);
+    if (outs[o].positions == e.mesh.positions) continue;
+    ctx.undeformed[o] = e.mesh.positions;
+    if (ctx.collisions.collides(outs[o], ctx.affected[o])) {
+      ++ctx.counts.undone_deformations;
+      continue;
+    }
+    e.mesh = std::move(outs[o]);
+    ctx.reshaped(out);
+    e.changed = true;
+  }
+}
+
+// A partner left unmerged gets its shape from before the deformation back, unless that shape
+// would now pass through an element merged or deformed since: the deformed shape was tested
+// against those, the one before was not.
+void restore_shape(MergeContext& ctx, int32_t out) {
+  std::vector<Vec3>& before = ctx.undeformed[out];
+  if (before.empty()) return;
+  PlaneElement& target = ctx.element(out);
+  TriMesh restored;
+  restored.positions = before;
+  restored.triangles = target.mesh.triangles;
+  if (ctx.collisions.collides(restored, ctx.affected[out])) return;
+  target.mesh.positions = std::move(before);
+  ctx.reshaped(out);
+}
+
+// An input that bridges two output elements (a yarn placed across the gap between two pieces of
+// one yarn) meets the second end to end: it joins that one too, by a second merge into it.
+// Returns the layer element absorbed, or -1, with `replacement` merged into it.
+int32_t bridge(MergeContext& ctx, const ElementRelation& partner, TriMesh& replacement) {
+  const PlaneElement& target = ctx.element(partner.out_element);
+  for (const ElementRelation& other : ctx.corr.relations) {
+    if (other.in_element != partner.in_element || ctx.out_partnered[other.out_element]) continue;
+    const int32_t second = ctx.affected[other.out_element];
+    // Whole elements only: a part would leave the rest of its element behind.
+    if (!ctx.layer[second].alive || !ctx.layer[second].pinned.empty() || !target.pinned.empty()) continue;
+    MergeResult bridged = merge_elements(ctx.layer[second].mesh, replacement, ctx.in_overlap, ctx.merging);
+    if (bridged.outcome != MergeOutcome::stitched ||
+        ctx.collisions.collides(bridged.element, ctx.affected[partner.out_element], second))
+      continue;
+    replacement = std::move(bridged.element);
+    return second;
+  }
+  return -1;
+}
+
+// Commits one merge into the layer, or refuses it: an element kept as it was, a result that
+// loses a pinned vertex, or one that would pass through a neighbour (a seam where two patches'
+// registrations disagree) leaves the output element as it was.
+void commit_merge(MergeContext& ctx, const ElementRelation& partner, MergeResult merged) {
+  PlaneElement& target = ctx.element(partner.out_element);
+  ctx.representative[partner.in_element] = ctx.affected[partner.out_element];
+  if (merged.outcome == MergeOutcome::kept_out) {
+    ++ctx.counts.kept;
+    restore_shape(ctx, partner.out_element);
+    return;
+  }
+  TriMesh& replacement =
+      merged.outcome == MergeOutcome::stitched ? merged.element : ctx.swatch.inputs[partner.in_element];
+  if (!keeps_pinned(target, replacement)) {
+    ++ctx.counts.refused_pinned;
+    restore_shape(ctx, partner.out_element);
+    return;
+  }
+  bool hits = ctx.collisions.collides(replacement, ctx.affected[partner.out_element]);
+  int32_t absorbed = -1;
+  if (hits && merged.outcome == MergeOutcome::stitched) {
+    absorbed = bridge(ctx, partner, replacement);
+    hits = absorbed < 0;
+  }
+  if (hits) {
+    ++ctx.counts.refused_merges;
+    restore_shape(ctx, partner.out_element);
+    return;
+  }
+  if (absorbed >= 0) {
+    ++ctx.counts.bridged;
+    ctx.layer[absorbed].alive = false;
+    ctx.layer[absorbed].changed = true;
+  }
+  if (merged.outcome == MergeOutcome::stitched) {
+    ++ctx.counts.stitched;
+  } else {
+    ++ctx.counts.replaced;
+    target.source = ctx.swatch.input_source[partner.in_element];
+  }
+  target.mesh = std::move(replacement);
+  ctx.reshaped(partner.out_element);
+  target.changed = true;
+}
+
+// Input elements not merged are added as they are, unless they lie wholly over existing output
+// or would pass through it (an input that related to an element merged with another one).
+void add_unmerged_inputs(MergeContext& ctx, const std::vector<uint8_t>& in_partnered, PatchOutcome& outcome) {
+  std::vector<TriMesh>& inputs = ctx.swatch.inputs;
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    if (in_partnered[i]) continue;
+    bool all_overlap = true;
+    for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && ctx.in_overlap(p);
+    const Rect2 b = xy_bounds(inputs[i]);
+    if (all_overlap || ctx.collisions.collides(inputs[i], -1)) {
+      ++ctx.counts.rejected_inputs;
+      continue;
+    }
+    ctx.representative[i] = static_cast<int32_t>(ctx.layer.size());
+    outcome.added.push_back(static_cast<int32_t>(ctx.layer.size()));
+    PlaneElement added;
+    added.mesh = std::move(inputs[i]);
+    added.bounds = b;
+    added.source = ctx.swatch.input_source[i];
+    added.changed = true;
+    ctx.layer.push_back(std::move(added));
+  }
+}
+
+}  // namespace
+
 PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& request,
                          const QuiltSwatch& swatch, const GeometryMatcher& matcher,
                          const PatchStepOptions& options, std::mt19937_64& rng, MergeCounts& counts, std::map<std::string, double>& seconds, const CancelToken* cancel) {
@@ -275,27 +457,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   const Rect2 footprint{t, t + swatch.extent};
   outcome.footprint = footprint;
 
-  // The new patch: swatch elements at t whose centre lies in the domain (on a surface, that lie
-  // wholly in the patch). Those left out still lie over the patch's cells: the swatch is not
-  // empty there, so those cells need kept geometry near them to count as covered (see
-  // covered_cells), and a later patch seeded there places them.
-  std::vector<TriMesh> inputs, left_out;
-  std::vector<int32_t> input_source;
-  for (size_t k = 0; k < swatch.elements.size(); ++k) {
-    const Rect2& b = swatch.element_bounds[k];
-    TriMesh placed_element = translated(swatch.elements[k], t);
-    const bool inside =
-        request.inside_domain(0.5 * (b.lo + b.hi) + t) &&
-        (!request.whole_inputs_only ||
-         std::all_of(placed_element.positions.begin(), placed_element.positions.end(),
-                     [&](const Vec3& p) { return request.inside_domain(glm::dvec2(p)); }));
-    if (!inside) {
-      left_out.push_back(std::move(placed_element));
-      continue;
-    }
-    inputs.push_back(std::move(placed_element));
-    input_source.push_back(static_cast<int32_t>(k));
-  }
+  PlacedSwatch placed_swatch = place_swatch(swatch, request, t);
+  std::vector<TriMesh>& inputs = placed_swatch.inputs;
   outcome.inputs = static_cast<int>(inputs.size());
   const std::vector<TriMesh> placed = inputs;
 
@@ -305,7 +468,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   // The overlap does not end at the domain's edge: where an output element and an input both
   // hang over it, they must be cut and stitched there too, or the input keeps a stub past the
   // output's end that no seam can join (the edge cells' occupancy stands for what lies beyond).
-  const auto in_overlap = [&](const Vec3& p) {
+  const std::function<bool(const Vec3&)> in_overlap = [&](const Vec3& p) {
     return footprint.contains(p) && occupied[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
   };
 
@@ -319,7 +482,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   Correspondences corr;
   {
     StageTimer timer(seconds, "correspondence");
-    corr = find_correspondences(outs, inputs, *swatch.faces, input_source, t, in_overlap, options.correspondence);
+    corr = find_correspondences(outs, inputs, *swatch.faces, placed_swatch.input_source, t, in_overlap,
+                                options.correspondence);
   }
   check_cancel();
 
@@ -334,100 +498,16 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   check_cancel();
 
   StageTimer timer(seconds, "merge");
-  // Each layer element's face runs for the collision checks (quilt_policies.h), measured once per
-  // shape (`forget` when a shape changes): a patch tests some thirty candidates against much the
-  // same neighbours.
-  std::vector<std::optional<std::vector<Box3>>> runs;
-  const auto layer_runs = [&](size_t k) -> const std::vector<Box3>& {
-    if (!runs[k]) runs[k] = face_run_boxes(layer[k].mesh);
-    return *runs[k];
-  };
-  // Elements near `mesh` in the layer, but for elements `self` and `also`.
-  const auto neighbours = [&](const TriMesh& mesh, int32_t self, int32_t also) {
-    const Rect2 b = xy_bounds(mesh);
-    runs.resize(layer.size());  // before any pointer into it is taken (the layer grows between calls)
-    std::vector<CollisionMesh> near;
-    for (size_t k = 0; k < layer.size(); ++k) {
-      const auto index = static_cast<int32_t>(k);
-      if (layer[k].alive && index != self && index != also && layer[k].bounds.overlaps(b))
-        near.push_back({&layer[k].mesh, &layer_runs(k)});
-    }
-    return near;
-  };
-  // Layer elements in the space the output will live in, placed once per shape. Over a curved
-  // base, elements apart in the plane can meet in space (where normals converge over a concave
-  // part, or where a patch wraps around a thin part), so neighbours there are found by their
-  // boxes in space, not in the plane.
-  struct Placed {
-    TriMesh mesh;
-    Box3 box;
-    std::vector<Box3> runs;
-  };
-  std::vector<std::optional<Placed>> in_space;
-  const auto placed_layer = [&](size_t k) -> const Placed& {
-    if (!in_space[k]) {
-      TriMesh placed = request.to_space(layer[k].mesh);
-      const Box3 box = bounding_box(placed.positions);
-      std::vector<Box3> placed_runs = face_run_boxes(placed);
-      in_space[k].emplace(Placed{std::move(placed), box, std::move(placed_runs)});
-    }
-    return *in_space[k];
-  };
-  const auto forget = [&](size_t k) {
-    if (k < in_space.size()) in_space[k].reset();
-    if (k < runs.size()) runs[k].reset();
-  };
-  // The collision policy, in the space the output will live in.
-  std::vector<Box3> obstacle_bounds;
-  std::vector<std::vector<Box3>> obstacle_runs;
-  for (const TriMesh& m : request.obstacles) {
-    obstacle_bounds.push_back(bounding_box(m.positions));
-    obstacle_runs.push_back(face_run_boxes(m));
-  }
-  const auto collides = [&](const TriMesh& mesh, int32_t self, int32_t also = -1) {
-    if (!request.to_space) return passes_through(mesh, neighbours(mesh, self, also));
-    const TriMesh placed = request.to_space(mesh);
-    const Box3 box = bounding_box(placed.positions);
-    // Grown before any pointer into it is taken (the layer grows between calls, not during one).
-    in_space.resize(layer.size());
-    std::vector<CollisionMesh> near;
-    for (size_t k = 0; k < layer.size(); ++k) {
-      const auto index = static_cast<int32_t>(k);
-      if (!layer[k].alive || index == self || index == also) continue;
-      const Placed& other = placed_layer(k);
-      if (other.box.overlaps(box)) near.push_back({&other.mesh, &other.runs});
-    }
-    for (size_t k = 0; k < request.obstacles.size(); ++k)
-      if (obstacle_bounds[k].overlaps(box)) near.push_back({&request.obstacles[k], &obstacle_runs[k]});
-    return passes_through(placed, near);
-  };
-  // A deformation that pushes an output element into a neighbour is undone: the element keeps
-  // its shape and the merge works from there.
-  // Shapes before the deformation: a partner that is not merged after all gets its shape back,
-  // since the deformation only served the seam (repeated patches would otherwise bend it again
-  // and again).
-  std::vector<std::vector<Vec3>> undeformed(outs.size());
-  for (size_t o = 0; o < outs.size(); ++o) {
-    PlaneElement& e = layer[affected[o]];
-    if (outs[o].positions == e.mesh.positions) continue;
-    undeformed[o] = e.mesh.positions;
-    if (collides(outs[o], affected[o])) {
-      ++counts.undone_deformations;
-      continue;
-    }
-    e.mesh = std::move(outs[o]);
-    forget(affected[o]);
-    e.bounds = xy_bounds(e.mesh);
-    e.changed = true;
-  }
-  // What stands for each input in the layer once merged (see covered_cells); -1: nothing.
-  std::vector<int32_t> representative(inputs.size(), -1);
-  std::vector<uint8_t> out_partnered(outs.size(), 0);
-  for (const ElementRelation* partner : partners) out_partnered[partner->out_element] = 1;
-  // Each merge depends only on its partner's output element and input, which nothing before it
-  // in the loop below changes (partners are one to one; a bridge absorbs only an unpartnered
-  // element): the merges run side by side, and are committed in order, since whether a result
-  // collides depends on what was committed before it.
+  LayerCollisions collisions(layer, request);
+  MergeContext ctx{layer, affected, placed_swatch, corr, in_overlap, options.merging, collisions, counts};
+  keep_deformations(ctx, outs);
+  ctx.representative.assign(inputs.size(), -1);
+  ctx.out_partnered.assign(outs.size(), 0);
+  for (const ElementRelation* partner : partners) ctx.out_partnered[partner->out_element] = 1;
+  // Each merge depends only on its partner's output element and input, which no commit before it
+  // changes (partners are one to one; a bridge absorbs only an unpartnered element): the merges
+  // run side by side, and are committed in order, since whether a result collides depends on what
+  // was committed before it.
   std::vector<MergeResult> merges(partners.size());
   tbb::parallel_for(size_t{0}, partners.size(), [&](size_t k) {
     merges[k] = merge_elements(layer[affected[partners[k]->out_element]].mesh, inputs[partners[k]->in_element],
@@ -435,100 +515,12 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   });
   for (size_t k = 0; k < partners.size(); ++k) {
     check_cancel();
-    const ElementRelation* partner = partners[k];
-    PlaneElement& target = layer[affected[partner->out_element]];
-    representative[partner->in_element] = affected[partner->out_element];
-    // A partner left unmerged gets its shape from before the deformation back, unless that shape
-    // would now pass through an element merged or deformed since: the deformed shape was tested
-    // against those, the one before was not.
-    const auto restore_shape = [&] {
-      std::vector<Vec3>& before = undeformed[partner->out_element];
-      if (before.empty()) return;
-      TriMesh restored;
-      restored.positions = before;
-      restored.triangles = target.mesh.triangles;
-      if (collides(restored, affected[partner->out_element])) return;
-      target.mesh.positions = std::move(before);
-      forget(affected[partner->out_element]);
-      target.bounds = xy_bounds(target.mesh);
-    };
-    MergeResult merged = std::move(merges[k]);
-    if (merged.outcome == MergeOutcome::kept_out) {
-      ++counts.kept;
-      restore_shape();
-      continue;
-    }
-    TriMesh& replacement = merged.outcome == MergeOutcome::stitched ? merged.element : inputs[partner->in_element];
-    if (!keeps_pinned(target, replacement)) {
-      ++counts.refused_pinned;
-      restore_shape();
-      continue;
-    }
-    // A merged element that would pass through a neighbour (a seam where two patches'
-    // registrations disagree) is refused: the output element stays as it was. But an input that
-    // bridges two output elements (a yarn placed across the gap between two pieces of one yarn)
-    // meets the second end to end: it joins that one too, by a second merge into it.
-    bool hits = collides(replacement, affected[partner->out_element]);
-    int32_t absorbed = -1;
-    if (hits && merged.outcome == MergeOutcome::stitched) {
-      for (const ElementRelation& other : corr.relations) {
-        if (other.in_element != partner->in_element || out_partnered[other.out_element]) continue;
-        const int32_t second = affected[other.out_element];
-        // Whole elements only: a part would leave the rest of its element behind.
-        if (!layer[second].alive || !layer[second].pinned.empty() || !target.pinned.empty()) continue;
-        MergeResult bridged = merge_elements(layer[second].mesh, replacement, in_overlap, options.merging);
-        if (bridged.outcome != MergeOutcome::stitched ||
-            collides(bridged.element, affected[partner->out_element], second))
-          continue;
-        replacement = std::move(bridged.element);
-        absorbed = second;
-        hits = false;
-        break;
-      }
-    }
-    if (hits) {
-      ++counts.refused_merges;
-      restore_shape();
-      continue;
-    }
-    if (absorbed >= 0) {
-      ++counts.bridged;
-      layer[absorbed].alive = false;
-      layer[absorbed].changed = true;
-    }
-    if (merged.outcome == MergeOutcome::stitched) {
-      ++counts.stitched;
-    } else {
-      ++counts.replaced;
-      target.source = input_source[partner->in_element];
-    }
-    target.mesh = std::move(replacement);
-    forget(affected[partner->out_element]);
-    target.bounds = xy_bounds(target.mesh);
-    target.changed = true;
+    commit_merge(ctx, *partners[k], std::move(merges[k]));
   }
-  // Input elements not merged: added as they are, unless they lie wholly over existing output or
-  // would pass through it (an input that related to an element merged with another one).
-  for (size_t i = 0; i < inputs.size(); ++i) {
-    if (in_partnered[i]) continue;
-    bool all_overlap = true;
-    for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && in_overlap(p);
-    const Rect2 b = xy_bounds(inputs[i]);
-    if (all_overlap || collides(inputs[i], -1)) {
-      ++counts.rejected_inputs;
-      continue;
-    }
-    representative[i] = static_cast<int32_t>(layer.size());
-    outcome.added.push_back(static_cast<int32_t>(layer.size()));
-    PlaneElement added;
-    added.mesh = std::move(inputs[i]);
-    added.bounds = b;
-    added.source = input_source[i];
-    added.changed = true;
-    layer.push_back(std::move(added));
-  }
-  if (!request.account_per_input) representative.clear();
-  outcome.covered = covered_cells(layer, placed, representative, left_out, footprint, grid, request.inside_domain);
+  add_unmerged_inputs(ctx, in_partnered, outcome);
+  if (!request.account_per_input) ctx.representative.clear();
+  outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out, footprint, grid,
+                                  request.inside_domain);
   return outcome;
 }
 

@@ -8,7 +8,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/measures.h"
 #include "mesh/topology.h"
+#include "quilt/merging/seam_alignment.h"
 #include "quilt/element_deformation.h"
 #include "spatial/box_grid.h"
 #include "spatial/segment_distance.h"
@@ -46,101 +48,6 @@ TriMesh extract(const TriMesh& mesh, const std::vector<uint8_t>& keep, std::vect
     part.triangles.push_back(t);
   }
   return part;
-}
-
-//! One seam point of an aligned loop pair: a first-loop vertex welded to a second-loop vertex, or
-//! one of them splitting the other loop's edge (seg0 -> seg1 in seam order) at `lambda`.
-struct SeamEvent {
-  enum Kind : uint8_t { pair, first_alone, second_alone } kind = pair;
-  int32_t first = -1, second = -1;  // loop positions (first loop; second loop as aligned, see Alignment)
-  int32_t seg0 = -1, seg1 = -1;     // other loop's edge ends, loop positions
-  double lambda = 0.0;
-};
-
-//! The events of one aligned loop pair, in seam order.
-struct Alignment {
-  double cost = std::numeric_limits<double>::infinity();
-  std::vector<SeamEvent> events;
-};
-
-//! Aligns closed polylines `first` (m points) and `second` (n points, already running the same way
-//! as `first`) by dynamic programming, first[0] welded to second[0]. Every point takes part in
-//! exactly one event, events in seam order; a point alone lands on the other loop's current edge,
-//! within [min_split, 1 - min_split] of it. Cost: total distance between matched points.
-Alignment align_loops(const std::vector<Vec3>& first, const std::vector<Vec3>& second, double min_split) {
-  const int32_t m = static_cast<int32_t>(first.size()), n = static_cast<int32_t>(second.size());
-  const double inf = std::numeric_limits<double>::infinity();
-  const int32_t stride = n + 1;  // cost[i * stride + j]: first i points and second j points placed
-  std::vector<double> cost(static_cast<size_t>(m + 1) * stride, inf);
-  enum Step : uint8_t { none, both, first_only, second_only };
-  std::vector<uint8_t> from(static_cast<size_t>(m + 1) * stride, none);
-  // A point landing near an end of the other edge would create a sliver, so the split stays
-  // within [min_split, 1 - min_split] of the edge and pays for the distance to that point.
-  auto alone_cost = [&](const Vec3& x, const Vec3& a, const Vec3& b, double* lambda) {
-    point_segment_distance(x, a, b, lambda);
-    *lambda = std::clamp(*lambda, min_split, 1.0 - min_split);
-    return glm::length(x - glm::mix(a, b, *lambda));
-  };
-  cost[1 * stride + 1] = glm::length(first[0] - second[0]);
-  for (int32_t i = 1; i <= m; ++i) {
-    for (int32_t j = 1; j <= n; ++j) {
-      if (i == 1 && j == 1) continue;
-      double best = inf;
-      uint8_t how = none;
-      if (i >= 2 && j >= 2) {
-        const double c = cost[(i - 1) * stride + (j - 1)] + glm::length(first[i - 1] - second[j - 1]);
-        if (c < best) best = c, how = both;
-      }
-      if (i >= 2) {
-        double lambda;
-        const double c = cost[(i - 1) * stride + j] + alone_cost(first[i - 1], second[j - 1], second[j % n], &lambda);
-        if (c < best) best = c, how = first_only;
-      }
-      if (j >= 2) {
-        double lambda;
-        const double c = cost[i * stride + (j - 1)] + alone_cost(second[j - 1], first[i - 1], first[i % m], &lambda);
-        if (c < best) best = c, how = second_only;
-      }
-      cost[i * stride + j] = best;
-      from[i * stride + j] = how;
-    }
-  }
-  Alignment out;
-  out.cost = cost[m * stride + n];
-  int32_t i = m, j = n;
-  while (!(i == 1 && j == 1)) {
-    SeamEvent e;
-    switch (from[i * stride + j]) {
-      case both: e.kind = SeamEvent::pair, e.first = i - 1, e.second = j - 1, --i, --j; break;
-      case first_only:
-        e.kind = SeamEvent::first_alone, e.first = i - 1, e.seg0 = j - 1, e.seg1 = j % n;
-        alone_cost(first[i - 1], second[j - 1], second[j % n], &e.lambda);
-        --i;
-        break;
-      case second_only:
-        e.kind = SeamEvent::second_alone, e.second = j - 1, e.seg0 = i - 1, e.seg1 = i % m;
-        alone_cost(second[j - 1], first[i - 1], first[i % m], &e.lambda);
-        --j;
-        break;
-      default: out.cost = inf; return out;
-    }
-    out.events.push_back(e);
-  }
-  out.events.push_back(SeamEvent{SeamEvent::pair, 0, 0, -1, -1, 0.0});
-  std::reverse(out.events.begin(), out.events.end());
-  // Points splitting the same edge form a run in seam order; their split parameters must rise
-  // by at least min_split, or they are spread evenly along the edge.
-  for (size_t r = 0; r < out.events.size();) {
-    size_t s = r + 1;
-    if (out.events[r].kind != SeamEvent::pair)
-      while (s < out.events.size() && out.events[s].kind == out.events[r].kind && out.events[s].seg0 == out.events[r].seg0) ++s;
-    bool spaced = true;
-    for (size_t t = r + 1; t < s; ++t) spaced = spaced && out.events[t].lambda - out.events[t - 1].lambda >= min_split;
-    if (!spaced)
-      for (size_t t = r; t < s; ++t) out.events[t].lambda = static_cast<double>(t - r + 1) / static_cast<double>(s - r + 1);
-    r = s;
-  }
-  return out;
 }
 
 StitchResult refuse(std::string why) {
@@ -513,101 +420,6 @@ std::string check_seam(const TriMesh& mesh, const std::vector<std::pair<Tri, Vec
 }
 
 }  // namespace
-
-bool cut_loops(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>& neighbors,
-               const std::vector<uint8_t>& keep, std::vector<CutLoop>& loops, std::string* why) {
-  loops.clear();
-  // Outgoing boundary half-edges per vertex: (face, slot, is_cut).
-  struct Out {
-    int32_t face, slot;
-    bool cut;
-  };
-  std::unordered_map<int32_t, std::vector<Out>> out;
-  for (size_t f = 0; f < mesh.num_faces(); ++f) {
-    if (!keep[f]) continue;
-    for (int k = 0; k < 3; ++k) {
-      const int32_t g = neighbors[f][k];
-      const bool cut = g >= 0 && !keep[g];
-      if (g == -1 || cut) out[mesh.triangles[f][k]].push_back({static_cast<int32_t>(f), k, cut});
-      if (g == -2) {
-        if (why) *why = "kept face " + std::to_string(f) + " has a non-manifold edge";
-        return false;
-      }
-    }
-  }
-  for (const auto& [v, list] : out)
-    if (list.size() > 1) {
-      if (why) *why = "the kept region is pinched at vertex " + std::to_string(v);
-      return false;
-    }
-  std::unordered_map<int32_t, uint8_t> used;
-  for (const auto& [start, list] : out) {
-    if (used[start]) continue;
-    CutLoop loop;
-    bool any_cut = false, any_original = false;
-    int32_t v = start;
-    while (!used[v]) {
-      used[v] = 1;
-      const Out& o = out.at(v).front();
-      loop.vertices.push_back(v);
-      loop.faces.push_back(o.face);
-      (o.cut ? any_cut : any_original) = true;
-      v = mesh.triangles[o.face][(o.slot + 1) % 3];
-      if (!out.count(v)) {
-        if (why) *why = "a boundary chain ends at vertex " + std::to_string(v);
-        return false;
-      }
-    }
-    if (v != start) {
-      if (why) *why = "boundary chains merge at vertex " + std::to_string(v);
-      return false;
-    }
-    if (any_cut && any_original) {
-      if (why) *why = "a cut loop runs along the element's own boundary";
-      return false;
-    }
-    if (any_cut) loops.push_back(std::move(loop));
-  }
-  // Deterministic order: by smallest vertex index.
-  std::sort(loops.begin(), loops.end(), [](const CutLoop& x, const CutLoop& y) {
-    return *std::min_element(x.vertices.begin(), x.vertices.end()) <
-           *std::min_element(y.vertices.begin(), y.vertices.end());
-  });
-  return true;
-}
-
-int32_t tidy_cut(const TriMesh& mesh, const std::vector<std::array<int32_t, 3>>& neighbors,
-                 std::vector<uint8_t>& keep) {
-  int32_t removed = 0;
-  const size_t F = mesh.num_faces();
-  for (int pass = 0; pass < 64; ++pass) {
-    bool changed = false;
-    for (size_t f = 0; f < F; ++f) {
-      if (!keep[f]) continue;
-      int cuts = 0;
-      for (int k = 0; k < 3; ++k) cuts += neighbors[f][k] >= 0 && !keep[neighbors[f][k]];
-      if (cuts >= 2) keep[f] = 0, ++removed, changed = true;
-    }
-    std::unordered_map<int32_t, int32_t> outgoing;
-    for (size_t f = 0; f < F; ++f) {
-      if (!keep[f]) continue;
-      for (int k = 0; k < 3; ++k)
-        if (neighbors[f][k] == -1 || (neighbors[f][k] >= 0 && !keep[neighbors[f][k]])) ++outgoing[mesh.triangles[f][k]];
-    }
-    for (size_t f = 0; f < F; ++f) {
-      if (!keep[f]) continue;
-      for (int k = 0; k < 3; ++k) {
-        auto it = outgoing.find(mesh.triangles[f][k]);
-        if (it != outgoing.end() && it->second > 1) {
-          keep[f] = 0, ++removed, changed = true;
-          break;
-        }
-      }
-    }
-    if (!changed) break;
-  }
-  return removed;
-}
 
 StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, const TriMesh& b,
                           const std::vector<uint8_t>& keep_b, const StitchOptions& options) {

@@ -4,6 +4,8 @@
 #include <algorithm>
 
 #include "merging_fixtures.h"
+#include "mesh/measures.h"
+#include "mesh/topology.h"
 #include "quilt/merging/stitching.h"
 
 namespace meshquilt {
