@@ -1,0 +1,65 @@
+//! Writing PLY, binary little endian or ASCII, with face properties `element` and `source`.
+
+#include "mesh/io/formats.h"
+
+#include <cstdint>
+#include <string>
+
+#include "mesh/io/io_helpers.h"
+
+namespace meshquilt::io {
+
+std::string format_ply(const TriMesh& mesh, bool binary) {
+  const bool with_elements = !mesh.elements.empty();
+  std::string out;
+  out.reserve(256 + (binary ? 24 * mesh.positions.size() + 17 * mesh.triangles.size()
+                            : 60 * mesh.positions.size() + 30 * mesh.triangles.size()));
+  out += "ply\nformat ";
+  out += binary ? "binary_little_endian" : "ascii";
+  out += " 1.0\ncomment written by meshquilt\nelement vertex ";
+  append_int(out, static_cast<int64_t>(mesh.positions.size()));
+  out += "\nproperty double x\nproperty double y\nproperty double z\nelement face ";
+  append_int(out, static_cast<int64_t>(mesh.triangles.size()));
+  out += "\nproperty list uchar int vertex_indices\n";
+  if (with_elements) out += "property int element\n";
+  const bool with_sources = mesh.sources.size() == mesh.triangles.size() && !mesh.sources.empty();
+  if (with_sources) out += "property int source\n";
+  out += "end_header\n";
+  for (const Vec3& p : mesh.positions) {
+    if (binary) {
+      append_binary(out, p.x, true);
+      append_binary(out, p.y, true);
+      append_binary(out, p.z, true);
+    } else {
+      append_vec(out, p);
+      out += '\n';
+    }
+  }
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    if (binary) {
+      out += static_cast<char>(3);
+      for (int32_t i : t) append_binary(out, i, true);
+      if (with_elements) append_binary(out, mesh.elements[f], true);
+      if (with_sources) append_binary(out, mesh.sources[f], true);
+    } else {
+      out += '3';
+      for (int32_t i : t) {
+        out += ' ';
+        append_int(out, i);
+      }
+      if (with_elements) {
+        out += ' ';
+        append_int(out, mesh.elements[f]);
+      }
+      if (with_sources) {
+        out += ' ';
+        append_int(out, mesh.sources[f]);
+      }
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+}  // namespace meshquilt::io
