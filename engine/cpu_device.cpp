@@ -23,8 +23,7 @@ class CpuBuffer final : public Buffer {
  public:
   explicit CpuBuffer(std::size_t bytes) : size_(bytes) {
     // A large buffer is written whole as soon as it exists (an upload): its pages are mapped in
-    // one call rather than one fault each, which on a virtual machine costs microseconds apiece
-    // (the built-in chain mail's grid upload: 44 -> 26 ms).
+    // one call rather than one fault each, which is dear on a virtual machine.
     if (bytes >= kMappedBytes) {
       void* mapped = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_POPULATE, -1, 0);
       if (mapped != MAP_FAILED) {

@@ -39,7 +39,7 @@ namespace {
 // Whether the machine shows a GPU that a Vulkan driver could use: a DRM render node (Mesa's and
 // AMD's drivers), an NVIDIA device or WSL's GPU, or a driver named by the loader's variables.
 // Without one only a software device can come up, and creating an instance to find that out
-// costs about 70 ms (the loader loads lavapipe and LLVM).
+// loads lavapipe and LLVM for nothing (docs/decisions/0018).
 bool gpu_may_be_present() {
   if (std::getenv("VK_ICD_FILENAMES") || std::getenv("VK_DRIVER_FILES")) return true;
   std::error_code error;

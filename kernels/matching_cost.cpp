@@ -29,8 +29,8 @@ using namespace kernels::matching_cost_layout;
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // A buffer of `count` T, to be written through the pointer returned (mapped device memory, or
-// host memory on the CPU back end): no staging copy (for the fruit's 7 M list entries the
-// buffers took 0.4-0.5 s with one, 0.17 s without). A binding may not be empty: an empty
+// host memory on the CPU back end): no staging copy, which for large grids cost more than the
+// upload itself. A binding may not be empty: an empty
 // array still gets one word.
 template <typename T>
 T* allocate(engine::Device& device, std::unique_ptr<engine::Buffer>& target, std::size_t count) {

@@ -89,7 +89,7 @@ float scan_group(const Swatch& s, const MatchingGroup& g, float factor, vec3 q, 
     const float plane_gap = f.normal.w == 0.0f ? std::abs(glm::dot(q - vec3(f.a), vec3(f.normal))) : 0.0f;
     // Nor can a face facing away or far off. One test of the larger of the three distance bounds
     // rejects what the shader's two tests reject: a branch per bound mispredicts more than the
-    // sphere's distance it may spare (the default job's matching 1.08 -> 1.04 s, median of 7).
+    // sphere's distance it may spare.
     if ((1.0f + lambda * std::max(std::max(sphere_gap, plane_gap), listed.near)) * normal_factor >= best) continue;
     const float dist2 = triangle_distance2(q, vec3(f.a), vec3(f.b), vec3(f.c), f.normal.w != 0.0f, f.a.w != 0.0f);
     best = std::min(best, (1.0f + lambda * std::sqrt(dist2)) * normal_factor);
@@ -159,8 +159,7 @@ void matching_cost_cpu(const engine::CpuDispatch& dispatch) {
   const uint end = std::min(dispatch.first + dispatch.count, params.invocation_count);
   if (first >= end) return;
   // Point by point across the chunk's candidates (neighbours on the candidate grid), whose
-  // queries fall in neighbouring voxels: the default job's matching 4-10% faster than candidate
-  // by candidate.
+  // queries fall in neighbouring voxels: the caches serve them better than candidate by candidate.
   const uint first_candidate = first / point_count, last_candidate = (end - 1) / point_count;
   // A pair waits on memory: its voxel's header, group headers and lists lie in a grid larger
   // than the caches. So the walk looks ahead: the voxel of the pair kVoxelAhead on has its header

@@ -2,9 +2,8 @@
 //! Reading and writing triangle meshes: OBJ, PLY (ASCII and binary), OFF (incl. COFF), STL.
 //!
 //! The parsers are our own rather than OpenMesh's: OpenMesh drops the PLY face property
-//! `element` and the OBJ groups that carry element ids, and is 4-10x slower (1M faces: binary
-//! PLY 0.98 s vs 0.17 s, OFF 2.5 s vs 0.6 s, OBJ 7.8 s vs 0.7 s). They read the whole file at
-//! once and parse with std::from_chars.
+//! `element` and the OBJ groups that carry element ids, and reads large meshes several times
+//! slower (perf/mesh_io_bench). They read the whole file at once and parse with std::from_chars.
 //! Details: OBJ `v`/`f` (v, v/vt, v//vn, v/vt/vn, negative indices); PLY ascii and binary
 //! little/big endian, any scalar types, unknown elements and properties skipped; OFF with
 //! [ST][C][N]OFF headers, `#` comments, counts on the keyword line, per-vertex/face colours

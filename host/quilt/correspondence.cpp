@@ -167,8 +167,8 @@ struct JoinedInput {
   std::vector<int32_t> face_element, face_local;
   std::vector<Vec3> face_normal;  // unit, zero for degenerate faces
   std::vector<FaceSphere> face_sphere;
-  // The faces around each vertex in compressed rows (a counting sort: this is built per patch;
-  // sorting every edge instead, the Apple row's correspondence took 1.46 s against 1.08).
+  // The faces around each vertex in compressed rows: a counting sort, since this is built per
+  // patch and sorting every edge was a large share of correspondence.
   std::vector<int32_t> vertex_face_first, vertex_faces;
   std::vector<double> element_longest_edge;  // of each element's faces
 
@@ -382,9 +382,8 @@ Correspondences relate(const std::vector<TriMesh>& out_elements, const std::vect
       if (input_of[input.face_element[cp.face]] < 0) return std::numeric_limits<double>::infinity();
       return (1.0 + lambda * cp.distance) * (1.0 + glm::length(current->normal - input.face_normal[cp.face]));
     };
-    // D >= 1 + lambda Dist: beyond (D_best - 1) / lambda no face can do better. (Seeding the
-    // bound with the Euclidean nearest face, or a walk from it, measured slower: the BVH's
-    // near-first traversal already finds a good face early.)
+    // D >= 1 + lambda Dist: beyond (D_best - 1) / lambda no face can do better. The bound is not
+    // seeded: the BVH's near-first traversal already finds a good face early.
     const std::function<double(double)> radius_for = [lambda](double best) {
       return lambda > 0.0 ? (best - 1.0) / lambda : std::numeric_limits<double>::infinity();
     };

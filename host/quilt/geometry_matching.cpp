@@ -27,6 +27,21 @@ namespace {
 // libraries, and the same seed must give the same output everywhere.
 size_t draw_index(std::mt19937_64& rng, size_t n) { return static_cast<size_t>(rng() % n); }
 
+// The nearest-face grid's shape, in the swatch's mean edge lengths (docs/decisions/0008, 0009):
+// small swatches (interlocking rings crowding hundreds of faces into a voxel's reach) get finer
+// voxels and longer lists than large ones, whose lists are short and whose grids are large.
+constexpr size_t kSmallSwatchFaces = 8192;
+constexpr double kSmallVoxel = 0.75, kLargeVoxel = 1.0;
+constexpr int kSmallMaxList = 1024, kLargeMaxList = 128;
+constexpr double kListReach = 1.5;  // faces listed within this far past the voxel's diagonal
+constexpr double kFar = 3.0;        // a point this far costs at least 1 + 3 lambda: lists nothing
+constexpr int64_t kMaxVoxels = int64_t{1} << 18;
+// Normal bins per octahedron side past kSmallSwatchFaces (docs/decisions/0007): short lists gain
+// little from finer bins and pay for them in small groups.
+constexpr int kLargeSwatchBinsPerSide = 3;
+// Exact evaluations are summed in this many blocks between early-stop tests (docs/decisions/0011).
+constexpr size_t kAbandonBlocks = 32;
+
 }  // namespace
 
 GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, double cell_size,
@@ -37,35 +52,22 @@ GeometryMatcher::GeometryMatcher(engine::Device& device, const TriMesh& swatch, 
   double largest = 0.0;
   for (const Vec3& p : swatch.positions) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   rounding_ = 1e-12 * largest;
-  // Voxels of 3/4 of a mean edge (1 past 8,192 faces; coarser past 2^18 voxels) listing the faces
-  // within 1.5 mean edges past the voxel's diagonal: with the drivers' lambda = 1 / mean edge,
-  // the cap 1 + lambda * reach then exceeds what most points cost even where the normals
-  // disagree, so the bound equals Eq. 2 for most pairs and the host rarely needs the BVH. Shorter
-  // lists (1 mean edge, or 64 faces) made the default jobs twice as slow. Lists are grouped by
-  // normal (below), so a long list costs little to scan: up to 1,024 faces on a small swatch,
-  // whose interlocking rings crowd hundreds into a voxel's reach (the default job: BVH fallbacks
-  // of exact costs 62 K -> 10 K against 256, for 6 MB), 128 past 8,192 faces, where 256 added a
-  // quarter to peak memory for no time saved. A point 3 mean edges from the swatch costs at least
-  // 4 whatever its normal; its voxel lists nothing. The voxel's size changes how fast the answers
-  // come, never the answers (exact costs and their faces, ties to the lower index). Past 8,192
-  // faces, voxels of 1 mean edge instead of 3/4 build the grid in about half the time (the Wire
-  // row 3.0 -> 2.2 s, most of it the grid) and match no slower (the 4x4 default chain mail
-  // 13.7-15.8 -> 12.9-14.4 s, twill about the same); 1.25 slowed the chain mail's matching by a
-  // quarter (shorter reach, more BVH searches).
+  // With the drivers' lambda = 1 / mean edge, the cap 1 + lambda * reach exceeds what most points
+  // cost even where the normals disagree: the bound equals Eq. 2 for most pairs and the host
+  // rarely needs the BVH. The grid's shape changes how fast answers come, never the answers
+  // (exact costs and their faces, ties to the lower index).
   const double mean_edge = mean_edge_;
-  const double voxel = (swatch.num_faces() <= 8192 ? 0.75 : 1.0) * mean_edge;
-  const int max_list = swatch.num_faces() <= 8192 ? 1024 : 128;
+  const bool small = swatch.num_faces() <= kSmallSwatchFaces;
+  const double voxel = (small ? kSmallVoxel : kLargeVoxel) * mean_edge;
+  const int max_list = small ? kSmallMaxList : kLargeMaxList;
   // Each voxel's list grouped by the faces' normal directions (an octahedral grid): most points
-  // face away from most groups, which a scan then passes over whole. Built-in chain mail over
-  // the sphere at scale 0.4: 5.4 G -> 4.0 G instructions in matching with 6 x 6 cells (4 x 4:
-  // 4.3 G). Past 8,192 faces 3 x 3: the lists are short there, and 6 x 6 took the Wire row's
-  // peak memory from 455 to 542 MB in small groups (3 x 3: 465 MB, and fewer instructions).
+  // face away from most groups, which a scan then passes over whole.
   std::vector<Vec3> normals;
   normals.reserve(face_planes_.size());
   for (const FacePlane& plane : face_planes_) normals.push_back(plane.normal);
-  normal_bins_ = bin_normals(normals, swatch.num_faces() <= 8192 ? kMaxBinsPerSide : 3);
-  const NearFaceGridRequest request{voxel, mean_edge, 1.5 * mean_edge, 3.0 * mean_edge, max_list, int64_t{1} << 18,
-                                    normal_bins_.bin_of};
+  normal_bins_ = bin_normals(normals, small ? kMaxBinsPerSide : kLargeSwatchBinsPerSide);
+  const NearFaceGridRequest request{voxel,    mean_edge,          kListReach * mean_edge, kFar * mean_edge,
+                                    max_list, kMaxVoxels, normal_bins_.bin_of};
   grid_ = cached_near_face_grid(options.grid_folder, swatch, request, &grid_source_);
   std::vector<std::vector<int32_t>> bin_faces(normal_bins_.size());
   for (size_t f = 0; f < normal_bins_.bin_of.size(); ++f) bin_faces[normal_bins_.bin_of[f]].push_back(static_cast<int32_t>(f));
@@ -171,8 +173,7 @@ double GeometryMatcher::point_cost(const Vec3& q, const Vec3& normal, const doub
   // fastest), each from the best so far; within a search, a face's normal term and bounding
   // sphere rule most out without a closest point. The answer is that of one search over every
   // face: the least cost, ties to the lower index (a later bin's face wins a tie only when lower).
-  // Against one BVH over every face: the Apple row's matching 9.3 -> 8.9 s (a quarter fewer faces
-  // bounded), the default job's 1.76 -> 1.70 s; the fruit's 9 bins made 36 took it to 11.7 s.
+  // See docs/decisions/0019.
   const size_t bins = bin_bvhs_.size();
   uint32_t order[kMaxBins];
   for (uint32_t b = 0; b < bins; ++b) order[b] = b;
@@ -219,12 +220,13 @@ double GeometryMatcher::exact_cost_up_to(const std::vector<Vec3>& points, const 
                                          std::vector<int32_t>& faces, const double* lower, double ceiling) const {
   const size_t bins = normal_bins_.size(), n = points.size();
   const Vec3 shift(translation.x, translation.y, 0.0);
-  // Blocks of a 32nd of the points (small sets in one block, and without bounds all of them):
-  // a candidate whose cost exceeds the ceiling by a fraction of the gap between its bound and
-  // its cost is known after a few blocks, the excess over the bounds being spread over the
-  // points. The Apple row's matching 11.5 -> 6.3 s with eighths, 6.1 -> 5.7 s more with 32nds.
-  const size_t block =
-      lower ? std::max<size_t>({1, static_cast<size_t>(options_.abandon_block), (n + 31) / 32}) : std::max<size_t>(n, 1);
+  // Blocks of a kAbandonBlocks-th of the points (small sets in one block, and without bounds all
+  // of them): a candidate whose cost exceeds the ceiling by a fraction of the gap between its
+  // bound and its cost is known after a few blocks, the excess over the bounds being spread over
+  // the points.
+  const size_t block = lower ? std::max<size_t>({1, static_cast<size_t>(options_.abandon_block),
+                                                 (n + kAbandonBlocks - 1) / kAbandonBlocks})
+                             : std::max<size_t>(n, 1);
   std::vector<double> left((n + block - 1) / block + 1, 0.0);  // bounds of the points from each block on
   for (size_t b = left.size() - 1; lower && b-- > 0;) {
     left[b] = left[b + 1];

@@ -499,7 +499,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
 
   StageTimer timer(seconds, "merge");
   LayerCollisions collisions(layer, request);
-  MergeContext ctx{layer, affected, placed_swatch, corr, in_overlap, options.merging, collisions, counts};
+  MergeContext ctx{layer, affected, placed_swatch, corr, in_overlap, options.merging, collisions, counts, {}, {}, {}};
   keep_deformations(ctx, outs);
   ctx.representative.assign(inputs.size(), -1);
   ctx.out_partnered.assign(outs.size(), 0);

@@ -2,8 +2,7 @@
 //! Nearest-face grids kept in files between jobs. A grid depends only on its mesh, the build's
 //! arguments and the builder, and geometry matching's answers never depend on the grid (it only
 //! says how fast they come), so a job over a swatch met before reads the grid instead of building
-//! it: the built-in chain mail's 19 MB in milliseconds against 0.2 s, the fruit's 61 MB against
-//! 1.7 s. A file is trusted only after every check a reader needs (offsets, indices, orderings
+//! it (docs/decisions/0020). A file is trusted only after every check a reader needs (offsets, indices, orderings
 //! and a checksum of the whole): a damaged one is rebuilt and replaced, never read.
 
 #include <cstdint>
