@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/atomic_write.h"
 
 namespace meshquilt::cli {
@@ -13,11 +13,11 @@ void check_writable(const std::filesystem::path& file) {
   std::filesystem::path folder = file.parent_path();
   if (folder.empty()) folder = ".";
   if (!std::filesystem::is_directory(folder))
-    throw IoError(ExitCode::write_failed, file.string() + ": folder " + folder.string() + " does not exist");
+    throw IoError(ErrorKind::write_failed, file.string() + ": folder " + folder.string() + " does not exist");
   if (access(folder.c_str(), W_OK) != 0)
-    throw IoError(ExitCode::write_failed, file.string() + ": folder " + folder.string() + " is not writable");
+    throw IoError(ErrorKind::write_failed, file.string() + ": folder " + folder.string() + " is not writable");
   if (std::filesystem::is_directory(file))
-    throw IoError(ExitCode::write_failed, file.string() + ": is a folder");
+    throw IoError(ErrorKind::write_failed, file.string() + ": is a folder");
 }
 
 }  // namespace meshquilt::cli

@@ -9,7 +9,7 @@
 #include "batch_runner.h"
 #include "batch_shard.h"
 #include "commands.h"
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -26,9 +26,9 @@ struct BatchArgs {
 };
 
 void run_batch_command(const BatchArgs& args) {
-  if (args.jobs < 1) throw InputError("--jobs: expected at least 1, got " + std::to_string(args.jobs), ExitCode::invalid_option);
+  if (args.jobs < 1) throw InputError("--jobs: expected at least 1, got " + std::to_string(args.jobs), ErrorKind::invalid_option);
   if (args.threads < 0)
-    throw InputError("--threads: expected 0 (automatic) or more, got " + std::to_string(args.threads), ExitCode::invalid_option);
+    throw InputError("--threads: expected 0 (automatic) or more, got " + std::to_string(args.threads), ErrorKind::invalid_option);
   const ProgressMode progress = parse_progress_mode(args.progress);
   const ReportFormat format = parse_report_format(args.format);
   const Manifest manifest = read_manifest(args.manifest);
@@ -40,7 +40,7 @@ void run_batch_command(const BatchArgs& args) {
     const ReportTotals totals = write_report(manifest, format, std::cout);
     std::cout.flush();
     if (!totals.complete())
-      throw Error(ExitCode::batch_incomplete,
+      throw Error(ErrorKind::batch_incomplete,
                   args.manifest + ": " + std::to_string(totals.jobs - totals.done) + " of " + std::to_string(totals.jobs) +
                       " jobs not done (" + std::to_string(totals.failed) + " failed, " + std::to_string(totals.running) +
                       " running, " + std::to_string(totals.missing) + " missing)");
@@ -53,7 +53,7 @@ void run_batch_command(const BatchArgs& args) {
   options.progress = progress;
   const BatchOutcome outcome = run_batch(manifest, options);
   if (outcome.failed > 0)
-    throw Error(ExitCode::batch_incomplete, args.manifest + ": " + std::to_string(outcome.failed) + " of " +
+    throw Error(ErrorKind::batch_incomplete, args.manifest + ": " + std::to_string(outcome.failed) + " of " +
                                                 std::to_string(outcome.selected) + " jobs of shard " +
                                                 options.shard.text() + " failed (see --report)");
 }

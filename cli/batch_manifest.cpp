@@ -9,7 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "error.h"
+#include "core/error.h"
+#include "exit_codes.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -22,7 +23,7 @@ struct RawJob {
 };
 
 [[noreturn]] void fail(const std::filesystem::path& file, int line, const std::string& problem) {
-  throw InputError(file.string() + ":" + std::to_string(line) + ": " + problem, ExitCode::bad_manifest);
+  throw InputError(file.string() + ":" + std::to_string(line) + ": " + problem, ErrorKind::bad_manifest);
 }
 
 int line_of_offset(const std::string& text, size_t offset) {
@@ -151,7 +152,7 @@ SynthArgs parse_synth_options(const std::filesystem::path& file, int line, const
   } catch (const CLI::ParseError& e) {
     fail(file, line, e.what());
   } catch (const Error& e) {
-    fail(file, line, e.what());
+    fail(file, line, message(e));
   }
   if (app.get_option("--output")->count() > 0)
     fail(file, line, "give the output as the job's \"output\", not as an option");
@@ -203,7 +204,7 @@ std::string Manifest::where(const BatchJob& job) const { return file.string() + 
 Manifest read_manifest(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file))
-    throw IoError(ExitCode::file_unreadable,
+    throw IoError(ErrorKind::file_unreadable,
                   file.string() + ": cannot open: " + std::strerror(in ? EISDIR : errno));
   std::stringstream buffer;
   buffer << in.rdbuf();

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "atomic_file.h"
-#include "error.h"
+#include "core/error.h"
 #include "sha256.h"
 
 #ifndef MESHQUILT_VERSION
@@ -68,7 +68,7 @@ std::optional<json> read_json(const std::filesystem::path& file) {
 void remove_file(const std::filesystem::path& file) {
   std::error_code error;
   std::filesystem::remove(file, error);
-  if (error) throw IoError(ExitCode::write_failed, file.string() + ": cannot remove: " + error.message());
+  if (error) throw IoError(ErrorKind::write_failed, file.string() + ": cannot remove: " + error.message());
 }
 
 json base_record(const BatchJob& job) {
@@ -192,12 +192,12 @@ JobStatus job_status(const Manifest& manifest, const BatchJob& job) {
 
 std::optional<JobLock> JobLock::try_acquire(const std::filesystem::path& file) {
   const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw IoError(ExitCode::write_failed, file.string() + ": cannot open: " + std::strerror(errno));
+  if (fd < 0) throw IoError(ErrorKind::write_failed, file.string() + ": cannot open: " + std::strerror(errno));
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     const int error = errno;
     ::close(fd);
     if (error == EWOULDBLOCK) return std::nullopt;
-    throw IoError(ExitCode::write_failed, file.string() + ": cannot lock: " + std::strerror(error));
+    throw IoError(ErrorKind::write_failed, file.string() + ": cannot lock: " + std::strerror(error));
   }
   return JobLock(fd);
 }

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "batch_records.h"
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -44,7 +44,7 @@ ReportFormat parse_report_format(const std::string& text) {
   if (text == "table") return ReportFormat::table;
   if (text == "json") return ReportFormat::json;
   if (text == "csv") return ReportFormat::csv;
-  throw InputError("--format: expected table, json or csv, got '" + text + "'", ExitCode::invalid_option);
+  throw InputError("--format: expected table, json or csv, got '" + text + "'", ErrorKind::invalid_option);
 }
 
 ReportTotals write_report(const Manifest& manifest, ReportFormat format, std::ostream& out) {

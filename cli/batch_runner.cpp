@@ -22,7 +22,8 @@
 #include "batch_progress.h"
 #include "batch_records.h"
 #include "cache_folder.h"
-#include "error.h"
+#include "core/error.h"
+#include "exit_codes.h"
 #include "signals.h"
 
 extern char** environ;
@@ -48,7 +49,7 @@ struct RunningJob {
 std::string executable_path() {
   std::vector<char> path(4096);
   const ssize_t n = ::readlink("/proc/self/exe", path.data(), path.size() - 1);
-  if (n <= 0) throw Error(ExitCode::internal, std::string("/proc/self/exe: cannot read: ") + std::strerror(errno));
+  if (n <= 0) throw Error(ErrorKind::internal, std::string("/proc/self/exe: cannot read: ") + std::strerror(errno));
   return std::string(path.data(), static_cast<size_t>(n));
 }
 
@@ -121,7 +122,7 @@ class Runner {
     ++outcome_.ran;
     progress_.started(job);
     if (!job.problem.empty()) {
-      record_failure(manifest_, job, static_cast<int>(ExitCode::file_unreadable), 0, job.problem, 0.0);
+      record_failure(manifest_, job, static_cast<int>(ErrorKind::file_unreadable), 0, job.problem, 0.0);
       progress_.failed(job, 0.0, job.problem);
       ++outcome_.failed;
       return false;
@@ -145,7 +146,7 @@ class Runner {
     std::vector<pollfd> fds;
     for (const RunningJob& r : running_) fds.push_back({r.output_fd, POLLIN, 0});
     const int ready = ::poll(fds.data(), fds.size(), timeout_ms);
-    if (ready < 0 && errno != EINTR) throw Error(ExitCode::internal, std::string("poll: ") + std::strerror(errno));
+    if (ready < 0 && errno != EINTR) throw Error(ErrorKind::internal, std::string("poll: ") + std::strerror(errno));
     std::vector<size_t> ended;
     for (size_t i = 0; ready > 0 && i < fds.size(); ++i)
       if ((fds[i].revents & (POLLIN | POLLHUP | POLLERR)) && !read_output(running_[i])) ended.push_back(i);
@@ -193,11 +194,11 @@ class Runner {
 
     const JobFiles files = job_files(manifest_, job);
     const int log_fd = ::open(files.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (log_fd < 0) throw IoError(ExitCode::write_failed, files.log.string() + ": cannot open: " + std::strerror(errno));
+    if (log_fd < 0) throw IoError(ErrorKind::write_failed, files.log.string() + ": cannot open: " + std::strerror(errno));
     int pipe_fds[2];
     if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
       ::close(log_fd);
-      throw Error(ExitCode::internal, std::string("pipe: ") + std::strerror(errno));
+      throw Error(ErrorKind::internal, std::string("pipe: ") + std::strerror(errno));
     }
     const std::string folder = manifest_.folder.string();
     const pid_t parent = ::getpid();
@@ -219,7 +220,7 @@ class Runner {
     ::close(log_fd);
     if (pid < 0) {
       ::close(pipe_fds[0]);
-      throw Error(ExitCode::internal, std::string("fork: ") + std::strerror(errno));
+      throw Error(ErrorKind::internal, std::string("fork: ") + std::strerror(errno));
     }
     free_slots_.pop_back();
     RunningJob running{&job, std::move(lock), pid, pipe_fds[0], slot, {}, 0.0, json(), Clock::now()};
@@ -264,8 +265,8 @@ class Runner {
         progress_.succeeded(job, seconds, r.summary);
         return;
       } catch (const IoError& e) {
-        record_failure(manifest_, job, static_cast<int>(e.code()), 0, e.what(), seconds);
-        progress_.failed(job, seconds, e.what());
+        record_failure(manifest_, job, exit_code(e.kind()), 0, message(e), seconds);
+        progress_.failed(job, seconds, message(e));
         ++outcome_.failed;
         return;
       }
@@ -299,7 +300,7 @@ BatchOutcome run_batch(const Manifest& manifest, const BatchOptions& options) {
   const std::filesystem::path records = records_folder(manifest);
   std::error_code error;
   std::filesystem::create_directories(records, error);
-  if (error) throw IoError(ExitCode::write_failed, records.string() + ": cannot create: " + error.message());
+  if (error) throw IoError(ErrorKind::write_failed, records.string() + ": cannot create: " + error.message());
 
   BatchProgress progress(options.progress, manifest, options.shard.text(), selected.size());
   Runner runner(manifest, options, progress);

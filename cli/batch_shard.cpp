@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -23,7 +23,7 @@ long long slurm_variable(const char* name, long long fallback) {
   if (!text || !*text) return fallback;
   long long value = 0;
   if (!parse_count(text, &value))
-    throw InputError(std::string(name) + ": expected a number, got '" + text + "'", ExitCode::invalid_option);
+    throw InputError(std::string(name) + ": expected a number, got '" + text + "'", ErrorKind::invalid_option);
   return value;
 }
 
@@ -34,7 +34,7 @@ Shard parse_shard(const std::string& text) {
   long long index = -1, count = 0;
   if (slash == std::string::npos || !parse_count(text.substr(0, slash), &index) ||
       !parse_count(text.substr(slash + 1), &count) || count < 1 || index < 0 || index >= count)
-    throw InputError("--shard: expected I/N with 0 <= I < N (e.g. 0/4), got '" + text + "'", ExitCode::invalid_option);
+    throw InputError("--shard: expected I/N with 0 <= I < N (e.g. 0/4), got '" + text + "'", ErrorKind::invalid_option);
   return Shard{static_cast<size_t>(index), static_cast<size_t>(count)};
 }
 
@@ -48,7 +48,7 @@ Shard shard_from_environment() {
     throw InputError("SLURM_ARRAY_TASK_ID " + std::to_string(id) + " is not one of " + std::to_string(count) +
                          " tasks from " + std::to_string(minimum) + " by " + std::to_string(step) +
                          " (use a range such as --array=0-7 or 1-15:2, or pass --shard)",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   return Shard{static_cast<size_t>((id - minimum) / step), static_cast<size_t>(count)};
 }
 

@@ -9,7 +9,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
-#include "error.h"
+#include "core/error.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "surface/element_placement.h"
@@ -30,7 +30,7 @@ void run_embed(const EmbedArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   if (args.embed != "auto" && args.embed != "shell" && args.embed != "normal")
     throw InputError("--embed: expected auto, shell or normal, got '" + args.embed + "'",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   const QuiltTexture texture = read_texture_file(args.texture);
@@ -41,7 +41,7 @@ void run_embed(const EmbedArgs& args) {
   int reduced_vertices = 0;
   if (args.embed == "shell" && texture.shell.height <= 0.0)
     throw InputError(args.texture + ": written with --embed normal, so it holds no shell map",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   const bool shell_map = texture.shell.height > 0.0 && args.embed != "normal";
   if (shell_map) {
     auto shell =

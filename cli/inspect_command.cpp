@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "error.h"
+#include "core/error.h"
 #include "inspect/inspect_report.h"
 #include "mesh/mesh_io.h"
 

@@ -6,12 +6,13 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
-#include "error.h"
+#include "core/error.h"
+#include "exit_codes.h"
 #include "heap_reuse.h"
 #include "signals.h"
 
 int main(int argc, char** argv) {
-  using meshquilt::ExitCode;
+  using meshquilt::cli::ExitCode;
   // Ctrl-C and SIGTERM cancel long work through a token (exit code `interrupted`), never mid-write.
   meshquilt::cli::install_interrupt_handlers();
   meshquilt::cli::keep_freed_memory();
@@ -33,8 +34,8 @@ int main(int argc, char** argv) {
     std::cerr << "meshquilt: " << e.what() << " (see --help)\n";
     return static_cast<int>(ExitCode::usage);
   } catch (const meshquilt::Error& e) {
-    std::cerr << "meshquilt: " << e.what() << "\n";
-    return static_cast<int>(e.code());
+    std::cerr << "meshquilt: " << meshquilt::cli::message(e) << "\n";
+    return meshquilt::cli::exit_code(e.kind());
   } catch (const std::exception& e) {
     std::cerr << "meshquilt: internal error: " << e.what() << "\n";
     return static_cast<int>(ExitCode::internal);

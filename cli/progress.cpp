@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::cli {
 
@@ -12,7 +12,7 @@ ProgressMode parse_progress_mode(const std::string& text) {
   if (text == "auto") return ProgressMode::automatic;
   if (text == "json") return ProgressMode::json;
   if (text == "none") return ProgressMode::none;
-  throw InputError("--progress: expected auto, json or none, got '" + text + "'", ExitCode::invalid_option);
+  throw InputError("--progress: expected auto, json or none, got '" + text + "'", ErrorKind::invalid_option);
 }
 
 ProgressReporter::ProgressReporter(ProgressMode mode, std::string task)

@@ -9,7 +9,7 @@
 
 #include "atomic_file.h"
 #include "commands.h"
-#include "error.h"
+#include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "render/png_encoding.h"
 
@@ -28,7 +28,7 @@ void check_png_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext != ".png")
-    throw IoError(ExitCode::unknown_format, file.string() + ": unknown image format (use .png)");
+    throw IoError(ErrorKind::unknown_format, file.string() + ": unknown image format (use .png)");
 }
 
 bool parse_side(const std::string& text, int* side) {
@@ -65,11 +65,11 @@ void parse_image_size(const std::string& text, RenderOptions* options) {
   if (x == std::string::npos || !parse_side(text.substr(0, x), &width) ||
       !parse_side(text.substr(x + 1), &height))
     throw InputError("--size: expected WxH in pixels (e.g. 1024x768), got '" + text + "'",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
     throw InputError(
         "--size " + text + ": each side must be 1 to " + std::to_string(kMaxImageSide) + " pixels",
-        ExitCode::invalid_option);
+        ErrorKind::invalid_option);
   options->width = width;
   options->height = height;
 }
@@ -80,13 +80,13 @@ View parse_view(const std::string& text) {
   if (text == "front") return View::front;
   if (text == "side") return View::side;
   throw InputError("--view: expected top, oblique, front or side, got '" + text + "'",
-                   ExitCode::invalid_option);
+                   ErrorKind::invalid_option);
 }
 
 RenderMode parse_render_mode(const std::string& text) {
   if (text == "shaded") return RenderMode::shaded;
   if (text == "elements") return RenderMode::elements;
-  throw InputError("--mode: expected shaded or elements, got '" + text + "'", ExitCode::invalid_option);
+  throw InputError("--mode: expected shaded or elements, got '" + text + "'", ErrorKind::invalid_option);
 }
 
 void add_render_command(CLI::App& app) {

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <vector>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -102,14 +102,14 @@ std::string sha256_hex(std::string_view bytes) {
 
 std::string sha256_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, file.string() + ": cannot open: " + std::strerror(errno));
+  if (!in) throw IoError(ErrorKind::file_unreadable, file.string() + ": cannot open: " + std::strerror(errno));
   Sha256 hash;
   std::vector<char> chunk(1 << 20);
   while (in) {
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
     hash.add(reinterpret_cast<const unsigned char*>(chunk.data()), static_cast<size_t>(in.gcount()));
   }
-  if (in.bad()) throw IoError(ExitCode::file_unreadable, file.string() + ": read error");
+  if (in.bad()) throw IoError(ErrorKind::file_unreadable, file.string() + ": read error");
   return hash.hex();
 }
 

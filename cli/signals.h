@@ -3,7 +3,7 @@
 //! which long work polls (exit code `interrupted`, temporaries removed by their writers); a
 //! second one removes pending temporary files and ends the process at once.
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::cli {
 

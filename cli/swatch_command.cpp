@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "commands.h"
-#include "error.h"
+#include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "swatch/chainmail.h"
 #include "swatch/fruit.h"

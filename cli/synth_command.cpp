@@ -16,7 +16,8 @@
 #include "cache_folder.h"
 #include "commands.h"
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
+#include "exit_codes.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
@@ -47,17 +48,17 @@ void parse_plane(const std::string& text, double* width, double* height) {
     if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument("trailing");
   } catch (const std::exception&) {
     throw InputError("--plane: expected WxH in swatch extents (e.g. 4x4), got '" + text + "'",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   }
   if (!(*width > 0.0 && *height > 0.0 && *width <= 1000.0 && *height <= 1000.0))
-    throw InputError("--plane: sizes must lie in (0, 1000], got '" + text + "'", ExitCode::invalid_option);
+    throw InputError("--plane: sizes must lie in (0, 1000], got '" + text + "'", ErrorKind::invalid_option);
 }
 
 void check_mesh_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
-    throw IoError(ExitCode::unknown_format, file.string() + ": unknown output format (use .ply, .obj, .off or .stl)");
+    throw IoError(ErrorKind::unknown_format, file.string() + ": unknown output format (use .ply, .obj, .off or .stl)");
 }
 
 // What either driver reports, for the stats JSON.
@@ -98,17 +99,17 @@ SynthSettings check_synth_args(const SynthArgs& args) {
   const bool curved = !args.base.empty();
   if (!curved) parse_plane(args.plane, &settings.width, &settings.height);
   if (curved && !(args.scale > 0.0 && args.scale <= 10.0))
-    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ExitCode::invalid_option);
+    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ErrorKind::invalid_option);
   if (curved && !(args.shell_height >= 0.0 && std::isfinite(args.shell_height)))
-    throw InputError("--shell-height: expected a non-negative length", ExitCode::invalid_option);
+    throw InputError("--shell-height: expected a non-negative length", ErrorKind::invalid_option);
   if (!curved && (!args.field.empty() || !args.write_field.empty() || !args.write_texture.empty()))
-    throw InputError("--field, --write-field and --write-texture need --base", ExitCode::invalid_option);
+    throw InputError("--field, --write-field and --write-texture need --base", ErrorKind::invalid_option);
   if (args.embed != "shell" && args.embed != "normal")
-    throw InputError("--embed: expected shell or normal, got '" + args.embed + "'", ExitCode::invalid_option);
+    throw InputError("--embed: expected shell or normal, got '" + args.embed + "'", ErrorKind::invalid_option);
   settings.backend = engine::parse_backend_choice(args.backend);
   settings.progress_mode = parse_progress_mode(args.progress);
   if (args.cells < 4 || args.cells > 256)
-    throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ExitCode::invalid_option);
+    throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ErrorKind::invalid_option);
   check_mesh_extension(args.output);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
@@ -116,7 +117,7 @@ SynthSettings check_synth_args(const SynthArgs& args) {
   if (!args.write_texture.empty()) check_writable(args.write_texture);
   if (!args.preview.empty()) {
     if (std::filesystem::path(args.preview).extension() != ".png")
-      throw IoError(ExitCode::unknown_format, args.preview + ": previews are PNG files (use .png)");
+      throw IoError(ErrorKind::unknown_format, args.preview + ": previews are PNG files (use .png)");
     check_writable(args.preview);
   }
   return settings;
@@ -249,7 +250,7 @@ void run_synth(const SynthArgs& args) {
 
   std::string note;
   std::unique_ptr<engine::Device> device = engine::open_device(settings.backend, &note);
-  if (!note.empty()) std::cerr << "meshquilt: " << note << "\n";
+  if (!note.empty()) std::cerr << "meshquilt: " << with_options(note) << "\n";
 
   ProgressReporter progress(progress_mode, "synth");
   QuiltOptions common;

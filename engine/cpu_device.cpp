@@ -14,7 +14,7 @@
 #include <new>
 #include <vector>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt::engine {
 namespace {

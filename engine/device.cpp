@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "cpu_device.h"
-#include "error.h"
+#include "core/error.h"
 #include "vulkan_device.h"
 
 namespace meshquilt::engine {
@@ -23,9 +23,7 @@ BackendChoice parse_backend_choice(std::string_view text) {
   if (text == "auto") return BackendChoice::automatic;
   if (text == "vulkan") return BackendChoice::vulkan;
   if (text == "cpu") return BackendChoice::cpu;
-  throw InputError("--backend: unknown back end '" + std::string(text) +
-                       "' (expected auto, vulkan or cpu)",
-                   ExitCode::invalid_option);
+  throw OptionError("{backend}: unknown back end '" + std::string(text) + "' (expected auto, vulkan or cpu)");
 }
 
 void Device::record(const DispatchTiming& timing, std::uint32_t invocations) {
@@ -59,7 +57,7 @@ std::unique_ptr<Device> open_device(BackendChoice choice, std::string* note) {
   // automatic: any failure to bring Vulkan up is a reason to fall back, not to stop.
   if (!gpu_may_be_present()) {
     if (note)
-      *note = "no GPU device (/dev/dri/renderD*, /dev/nvidia*, /dev/dxg); using the CPU back end (--backend vulkan "
+      *note = "no GPU device (/dev/dri/renderD*, /dev/nvidia*, /dev/dxg); using the CPU back end ({backend} vulkan "
               "forces a software Vulkan device)";
     return open_cpu_device();
   }
@@ -68,7 +66,7 @@ std::unique_ptr<Device> open_device(BackendChoice choice, std::string* note) {
     if (!vulkan->software_rasterizer()) return vulkan;
     if (note)
       *note = "only a software Vulkan device (" + vulkan->name() +
-              "); using the faster CPU back end (--backend vulkan forces it)";
+              "); using the faster CPU back end ({backend} vulkan forces it)";
     return open_cpu_device();
   } catch (const DeviceError& error) {
     if (note) *note = std::string("no usable Vulkan device (") + error.what() + "); using the CPU back end";

@@ -27,7 +27,7 @@ enum class BackendChoice { automatic, vulkan, cpu };
 const char* backend_name(Backend backend);
 
 //! Parses "auto", "vulkan" or "cpu".
-//! \throw InputError (ExitCode::invalid_option) naming the option value otherwise.
+//! \throw InputError (ErrorKind::invalid_option) naming the option value otherwise.
 BackendChoice parse_backend_choice(std::string_view text);
 
 //! A storage buffer, mapped into host memory for its whole life (host-visible and coherent on

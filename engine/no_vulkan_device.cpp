@@ -1,5 +1,5 @@
 // Built instead of vulkan_device.cpp when MESHQUILT_VULKAN=OFF.
-#include "error.h"
+#include "core/error.h"
 #include "vulkan_device.h"
 
 namespace meshquilt::engine {

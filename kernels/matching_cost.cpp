@@ -10,7 +10,7 @@
 #include <span>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "matching_cost_cpu.h"
 #include "matching_cost_layout.h"
 #if MESHQUILT_HAS_VULKAN
@@ -23,7 +23,7 @@ namespace {
 using namespace kernels::matching_cost_layout;
 
 [[noreturn]] void invalid(const std::string& problem) {
-  throw InputError("matching_cost: " + problem, ExitCode::invalid_option);
+  throw InputError("matching_cost: " + problem, ErrorKind::invalid_option);
 }
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }

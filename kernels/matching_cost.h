@@ -48,7 +48,7 @@ class MatchingCost {
  public:
   //! Uploads the swatch and its grid (built by build_near_face_grid over the same faces, in
   //! double). `device` must outlive this object; `grid` need not.
-  //! \throw InputError (ExitCode::invalid_option) when the swatch has no faces, an index is out
+  //! \throw InputError (ErrorKind::invalid_option) when the swatch has no faces, an index is out
   //! of range, a coordinate or normal is not finite, the normals do not match the faces, lambda
   //! is negative or the grid does not belong to the swatch. \throw DeviceError when the device
   //! fails.

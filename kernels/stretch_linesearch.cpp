@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "stretch_linesearch_cpu.h"
 #include "stretch_linesearch_layout.h"
 #if MESHQUILT_HAS_VULKAN
@@ -20,7 +20,7 @@ namespace {
 using namespace kernels::stretch_linesearch_layout;
 
 [[noreturn]] void invalid(const std::string& problem) {
-  throw InputError("stretch_linesearch: " + problem, ExitCode::invalid_option);
+  throw InputError("stretch_linesearch: " + problem, ErrorKind::invalid_option);
 }
 
 bool finite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }

@@ -54,7 +54,7 @@ struct StretchSearchOptions {
 class StretchLineSearch {
  public:
   //! Validates and uploads the problem. `device` must outlive this object; `problem` need not.
-  //! \throw InputError (ExitCode::invalid_option) when a size does not match #A, an offset is
+  //! \throw InputError (ErrorKind::invalid_option) when a size does not match #A, an offset is
   //! out of order or the offsets do not end at vertex_tets.size(), a corner code is >= 2 #A or
   //! repeated within a tet, the vertex lists are not exactly the tets holding each top corner,
   //! a value is not finite, a weight is not positive or texture_height is not positive.
@@ -69,7 +69,7 @@ class StretchLineSearch {
   //! completes before the next starts. `colours` are lists of atlas vertices that move; a vertex
   //! appears in at most one colour, and no two vertices of a colour share a tet (so their searches
   //! are independent). Vertices in no colour keep their top uv bit for bit.
-  //! \throw InputError (ExitCode::invalid_option) when top_uv.size() != #A or holds a non-finite
+  //! \throw InputError (ErrorKind::invalid_option) when top_uv.size() != #A or holds a non-finite
   //! value, a colour lists a vertex >= #A, a vertex appears twice, two vertices of a colour share
   //! a tet, sweeps < 0, min_volume_ratio is outside [0, 1), or the searches would exceed the
   //! device's loop budget (Device::max_loop_iterations: about (golden_steps + 4) x the most tets

@@ -14,7 +14,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
-#include "error.h"
+#include "core/error.h"
 #include "spatial/box_grid.h"
 #include "spatial/face_bvh.h"
 
@@ -54,12 +54,12 @@ bool triangle_overlaps_box(const glm::dvec2 p[3], const Box2& box) {
 
 PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneCoverageOptions& options) {
   if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
-    throw InputError("plane coverage: cell size " + std::to_string(cell_size) + " is not positive", ExitCode::invalid_option);
+    throw InputError("plane coverage: cell size " + std::to_string(cell_size) + " is not positive", ErrorKind::invalid_option);
   }
   if (options.region) {
     const auto& [a, b] = *options.region;
     if (!(b.x > a.x && b.y > a.y) || !std::isfinite(a.x + a.y + b.x + b.y))
-      throw InputError("plane coverage: the region is empty or not finite", ExitCode::invalid_option);
+      throw InputError("plane coverage: the region is empty or not finite", ErrorKind::invalid_option);
   }
   PlaneCoverage out;
   if (mesh.num_faces() == 0) return out;
@@ -253,7 +253,7 @@ std::vector<double> signed_heights(const std::vector<Vec3>& points, const TriMes
 
 BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radius, const BaseCoverageOptions& options) {
   if (!(radius > 0.0) || !std::isfinite(radius)) {
-    throw InputError("base coverage: radius " + std::to_string(radius) + " is not positive", ExitCode::invalid_option);
+    throw InputError("base coverage: radius " + std::to_string(radius) + " is not positive", ErrorKind::invalid_option);
   }
   if (base.num_faces() == 0) throw InputError("base mesh has no faces");
   BaseCoverage out;

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "inspect/element_statistics.h"
 #include "inspect/element_topology.h"
 #include "spatial/intersecting_pairs.h"
@@ -47,7 +47,7 @@ double positive_median(const std::vector<double>& values, double fallback) {
 
 InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, const TriMesh* swatch_input,
                            const TriMesh* base_input) {
-  if (options.plane && base_input) throw InputError("inspect: --plane and --base exclude each other", ExitCode::invalid_option);
+  if (options.plane && base_input) throw OptionError("inspect: {plane} and {base} exclude each other");
   InspectReport report;
   StageTimer timer(report.timings);
   report.weld_tolerance = options.weld_tolerance;

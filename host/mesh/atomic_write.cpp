@@ -10,7 +10,7 @@
 #include <cstring>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
@@ -73,7 +73,7 @@ void write_file_atomic(const std::filesystem::path& file, std::span<const std::s
                                               std::to_string(counter.fetch_add(1)) + ".tmp"))
                                     .string();
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) throw IoError(ExitCode::write_failed, name + ": cannot create temporary file: " + std::strerror(errno));
+  if (fd < 0) throw IoError(ErrorKind::write_failed, name + ": cannot create temporary file: " + std::strerror(errno));
   const int slot = register_pending(temporary);
   int open_fd = fd;
   auto discard = [&] {
@@ -85,7 +85,7 @@ void write_file_atomic(const std::filesystem::path& file, std::span<const std::s
   auto fail = [&](const std::string& reason) {
     const std::string message = name + ": " + reason + ": " + std::strerror(errno);
     discard();
-    throw IoError(ExitCode::write_failed, message);
+    throw IoError(ErrorKind::write_failed, message);
   };
   auto poll = [&] {
     if (cancel && cancel->cancelled()) {
@@ -107,7 +107,7 @@ void write_file_atomic(const std::filesystem::path& file, std::span<const std::s
   if (::close(fd) != 0) {
     const std::string message = name + ": close failed: " + std::strerror(errno);
     discard();
-    throw IoError(ExitCode::write_failed, message);
+    throw IoError(ErrorKind::write_failed, message);
   }
   poll();
   if (::rename(temporary.c_str(), name.c_str()) != 0) fail("cannot replace file");

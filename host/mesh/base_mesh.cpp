@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
 

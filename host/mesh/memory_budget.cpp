@@ -12,7 +12,7 @@
 #include <fstream>
 #include <limits>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
@@ -66,8 +66,7 @@ uint64_t memory_budget() {
 
 uint64_t parse_memory_size(const std::string& text, const std::string& option) {
   auto fail = [&] {
-    throw InputError(option + ": expected a size such as 8G, 512M or 1.5GiB, got '" + text + "'",
-                     ExitCode::invalid_option);
+    throw OptionError("{" + option + "}: expected a size such as 8G, 512M or 1.5GiB, got '" + text + "'");
   };
   double number = 0.0;
   const char* begin = text.data();
@@ -117,8 +116,8 @@ void check_memory_budget(double bytes, const std::string& what) {
   const uint64_t budget = memory_budget();
   if (!(bytes <= static_cast<double>(budget))) {
     throw InputError(what + " needs about " + format_bytes(bytes) + ", more than the memory budget " +
-                         format_bytes(static_cast<double>(budget)) + " (raise it with --max-memory)",
-                     ExitCode::too_large);
+                         format_bytes(static_cast<double>(budget)) + " (raise it with {max_memory})",
+                     ErrorKind::too_large);
   }
 }
 

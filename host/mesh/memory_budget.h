@@ -25,8 +25,8 @@ void set_memory_budget(uint64_t bytes);
 uint64_t memory_budget();
 
 //! Parses "2G", "512M", "1.5GiB", "800k" or a plain byte count (powers of 1024).
-//! \throw InputError(invalid_option) naming `option` when the text is not such a size or is 0.
-uint64_t parse_memory_size(const std::string& text, const std::string& option = "--max-memory");
+//! \throw OptionError naming the parameter `option` when the text is not such a size or is 0.
+uint64_t parse_memory_size(const std::string& text, const std::string& option = "max_memory");
 
 //! "1.5 GiB", "12.0 MiB", "900 B".
 std::string format_bytes(double bytes);

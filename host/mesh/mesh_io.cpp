@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/atomic_write.h"
 #include "mesh/io/formats.h"
 #include "mesh/memory_budget.h"
@@ -29,20 +29,20 @@ std::string read_whole_file(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) {
-    throw IoError(ExitCode::file_unreadable, name + ": cannot open: is a directory");
+    throw IoError(ErrorKind::file_unreadable, name + ": cannot open: is a directory");
   }
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, name + ": cannot open: " + std::strerror(errno));
+  if (!in) throw IoError(ErrorKind::file_unreadable, name + ": cannot open: " + std::strerror(errno));
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
-  if (size < 0) throw IoError(ExitCode::file_unreadable, name + ": cannot open: cannot determine its size");
+  if (size < 0) throw IoError(ErrorKind::file_unreadable, name + ": cannot open: cannot determine its size");
   in.seekg(0, std::ios::beg);
   // The text and the mesh parsed from it live together for a moment; a mesh takes at most about
   // as many bytes as its binary file and far fewer than its text.
   check_memory_budget(2.0 * static_cast<double>(size), name + ": reading this " + format_bytes(static_cast<double>(size)) + " file");
   std::string data(static_cast<size_t>(size), '\0');
   if (size > 0 && !in.read(data.data(), size)) {
-    throw IoError(ExitCode::file_unreadable, name + ": cannot open: read failed: " + std::strerror(errno));
+    throw IoError(ErrorKind::file_unreadable, name + ": cannot open: read failed: " + std::strerror(errno));
   }
   return data;
 }
@@ -55,7 +55,7 @@ TriMesh read_mesh(const std::filesystem::path& file) {
   const std::string name = file.string();
   const std::string ext = lower_extension(file);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
-    throw IoError(ExitCode::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
+    throw IoError(ErrorKind::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
   }
   const std::string data = read_whole_file(file);
   return parse_mesh(data, ext, name);
@@ -65,7 +65,7 @@ TriMesh parse_mesh(std::string_view data, const std::string& extension, const st
   std::string ext = extension;
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
-    throw IoError(ExitCode::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
+    throw IoError(ErrorKind::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
   }
   TriMesh mesh;
   if (ext == ".obj") {
@@ -85,17 +85,17 @@ void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const Wr
   const std::string name = file.string();
   const std::string ext = lower_extension(file);
   if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
-    throw IoError(ExitCode::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
+    throw IoError(ErrorKind::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
   }
   if (!mesh.elements.empty() && mesh.elements.size() != mesh.triangles.size()) {
-    throw IoError(ExitCode::write_failed, name + ": " + std::to_string(mesh.elements.size()) + " element ids for " +
+    throw IoError(ErrorKind::write_failed, name + ": " + std::to_string(mesh.elements.size()) + " element ids for " +
                                               std::to_string(mesh.triangles.size()) + " faces");
   }
   const auto num_vertices = static_cast<uint64_t>(mesh.positions.size());
   for (const Tri& t : mesh.triangles) {
     for (int32_t i : t) {
       if (i < 0 || static_cast<uint64_t>(i) >= num_vertices) {
-        throw IoError(ExitCode::write_failed, name + ": face vertex index " + std::to_string(i) + " out of range");
+        throw IoError(ErrorKind::write_failed, name + ": face vertex index " + std::to_string(i) + " out of range");
       }
     }
   }

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/measures.h"
 #include "mesh/validation.h"
 
@@ -15,7 +15,7 @@ namespace meshquilt {
 
 void check_swatch_proportions(const TriMesh& swatch, const std::string& source) {
   auto fail = [&](const std::string& problem) {
-    throw InputError(source + ": degenerate swatch: " + problem, ExitCode::invalid_mesh);
+    throw InputError(source + ": degenerate swatch: " + problem, ErrorKind::invalid_mesh);
   };
   auto vertex_text = [&](size_t v) {
     char buffer[160];
@@ -99,7 +99,7 @@ TriMesh orient_swatch(const TriMesh& swatch, const std::string& source) {
   const int axis_x = (height + 1) % 3;
   const int axis_y = (height + 2) % 3;
   auto fail = [&](const std::string& problem) {
-    throw InputError(source + ": degenerate swatch: " + problem, ExitCode::invalid_mesh);
+    throw InputError(source + ": degenerate swatch: " + problem, ErrorKind::invalid_mesh);
   };
   if (!(extent[height] >= 1e-9 * diagonal) || !(diagonal > 0.0)) {
     fail("zero thickness (height " + std::to_string(extent[height]) + ", bounding-box diagonal " +

@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/disjoint_sets.h"
 
 namespace meshquilt {

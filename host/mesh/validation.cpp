@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 
 void validate_mesh(const TriMesh& mesh, const std::string& source) {
-  auto fail = [&](const std::string& problem) { throw InputError(source + ": " + problem, ExitCode::invalid_mesh); };
+  auto fail = [&](const std::string& problem) { throw InputError(source + ": " + problem, ErrorKind::invalid_mesh); };
   if (mesh.triangles.empty()) fail("mesh has no faces");
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3& p = mesh.positions[v];

@@ -11,7 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/measures.h"
 #include "spatial/exact_predicates.h"
 #include "spatial/face_bvh.h"
@@ -318,12 +318,12 @@ Correspondences correspond(const std::vector<TriMesh>& out_elements, const std::
   const double lambda = options.lambda;
   if (!(lambda >= 0.0) || !std::isfinite(lambda)) {
     throw InputError("correspondence: lambda = " + std::to_string(lambda) + " must be finite and >= 0",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   }
   if (!(options.max_distance_factor > 0.0)) {
     throw InputError("correspondence: max_distance_factor = " + std::to_string(options.max_distance_factor) +
                          " must be positive",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   }
   Correspondences result;
 

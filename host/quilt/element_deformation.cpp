@@ -8,7 +8,7 @@
 
 #include <Eigen/Sparse>
 
-#include "error.h"
+#include "core/error.h"
 #include "numerics/sparse_solve.h"
 #include "mesh/disjoint_sets.h"
 
@@ -75,7 +75,7 @@ OneRing one_ring(const TriMesh& mesh) {
 std::vector<Vec3> solve_deformation(const TriMesh& mesh, const std::vector<ConstraintRow>& rows, double mu) {
   if (!(mu > 0.0) || !std::isfinite(mu)) {
     throw InputError("element deformation: mu = " + std::to_string(mu) + " must be positive and finite",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   }
   std::vector<Vec3> result = mesh.positions;
   if (rows.empty()) return result;
@@ -176,7 +176,7 @@ std::vector<Vec3> deform_with_vertex_constraints(const TriMesh& element,
     }
     if (!finite(vc.target)) {
       throw InputError("element deformation: constraint " + std::to_string(c) + " has a non-finite target",
-                       ExitCode::invalid_option);
+                       ErrorKind::invalid_option);
     }
     rows.push_back(ConstraintRow{{vc.vertex, 0, 0}, {1.0, 0.0, 0.0}, 1, vc.target});
   }
@@ -198,7 +198,7 @@ std::vector<Vec3> deform_with_face_constraints(const TriMesh& element,
     }
     if (!finite(fc.target) || !finite(fc.barycentric)) {
       throw InputError("element deformation: face constraint " + std::to_string(c) + " has non-finite values",
-                       ExitCode::invalid_option);
+                       ErrorKind::invalid_option);
     }
     const Tri& t = element.triangles[fc.face];
     for (int k = 0; k < 3; ++k) {

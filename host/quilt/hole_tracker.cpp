@@ -2,13 +2,13 @@
 
 #include <algorithm>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 
 HoleTracker::HoleTracker(SeedFinder& seeds, int attempts)
     : seeds_(seeds), attempts_(attempts), tries_(seeds.cell_count(), 0), hole_(seeds.cell_count(), 0) {
-  if (attempts < 1) throw InputError("seed attempts must be at least 1", ExitCode::invalid_option);
+  if (attempts < 1) throw InputError("seed attempts must be at least 1", ErrorKind::invalid_option);
 }
 
 void HoleTracker::attempted(int cell) {

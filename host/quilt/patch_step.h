@@ -23,7 +23,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/tri_mesh.h"
 #include "quilt/correspondence.h"
 #include "quilt/element_deformation.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/topology.h"
 #include "quilt/merging/abutting_elements.h"
 #include "quilt/broken_elements.h"
@@ -35,7 +35,7 @@ std::vector<glm::dvec2> covering_translations(int px, int py, int sub_nx, int su
 TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const PlanarQuiltOptions& options,
                     QuiltStats* stats_out) {
   if (!(options.width > 0.0) || !(options.height > 0.0))
-    throw InputError("plane size must be positive", ExitCode::invalid_option);
+    throw InputError("plane size must be positive", ErrorKind::invalid_option);
   QuiltStats stats;
   auto& seconds = stats.stage_seconds;
 

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "quilt/geometry_matching.h"
 #include "quilt/patch_step.h"
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 
@@ -12,12 +12,12 @@ SeedFinder::SeedFinder(int nx, int ny) : nx_(nx), ny_(ny), unprocessed_(0) {
   if (nx <= 0 || ny <= 0) {
     throw InputError("seed finding: grid size " + std::to_string(nx) + " x " + std::to_string(ny) +
                          " must be positive",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   }
   const int64_t cells = int64_t(nx) * ny;
   if (cells > int64_t(INT32_MAX) / 2) {
     throw InputError("seed finding: grid of " + std::to_string(cells) + " cells is too large",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   }
   unprocessed_ = static_cast<int>(cells);
   processed_.assign(cells, 0);
@@ -31,7 +31,7 @@ SeedFinder::SeedFinder(int nx, int ny) : nx_(nx), ny_(ny), unprocessed_(0) {
 SeedFinder::SeedFinder(const std::vector<std::vector<int32_t>>& neighbours)
     : nx_(static_cast<int>(neighbours.size())), ny_(1), unprocessed_(nx_) {
   if (neighbours.empty()) {
-    throw InputError("seed finding: the cell graph has no cells", ExitCode::invalid_option);
+    throw InputError("seed finding: the cell graph has no cells", ErrorKind::invalid_option);
   }
   adjacency_offsets_.reserve(neighbours.size() + 1);
   adjacency_offsets_.push_back(0);
@@ -40,7 +40,7 @@ SeedFinder::SeedFinder(const std::vector<std::vector<int32_t>>& neighbours)
       if (n < 0 || n >= nx_) {
         throw InputError("seed finding: cell " + std::to_string(c) + " lists neighbour " +
                              std::to_string(n) + " outside [0, " + std::to_string(nx_) + ")",
-                         ExitCode::invalid_option);
+                         ErrorKind::invalid_option);
       }
       adjacency_.push_back(n);
     }

@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 
@@ -13,7 +13,7 @@ std::string encode_png(const RgbImage& image) {
       image.rgb.size() != static_cast<size_t>(image.width) * image.height * 3)
     throw InputError("png: image of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                          " pixels holds " + std::to_string(image.rgb.size()) + " bytes",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   // The simplified API reports errors through its return value and `message`, so no setjmp
   // crosses C++ frames.
   png_image png;
@@ -25,10 +25,10 @@ std::string encode_png(const RgbImage& image) {
   png_alloc_size_t size = 0;
   // First call measures, second writes.
   if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), 0, nullptr))
-    throw IoError(ExitCode::write_failed, std::string("PNG encoding: ") + png.message);
+    throw IoError(ErrorKind::write_failed, std::string("PNG encoding: ") + png.message);
   std::string bytes(size, '\0');
   if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgb.data(), 0, nullptr))
-    throw IoError(ExitCode::write_failed, std::string("PNG encoding: ") + png.message);
+    throw IoError(ErrorKind::write_failed, std::string("PNG encoding: ") + png.message);
   bytes.resize(size);
   png_image_free(&png);
   return bytes;

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "render/element_palette.h"
 #include "spatial/face_bvh.h"
 
@@ -81,15 +81,14 @@ uint8_t to_byte(double c) { return static_cast<uint8_t>(std::lround(std::clamp(c
 void validate_render_options(const RenderOptions& options) {
   if (options.width < 1 || options.height < 1 || options.width > kMaxImageSide ||
       options.height > kMaxImageSide)
-    throw InputError("--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-                         ": each side must be 1 to " + std::to_string(kMaxImageSide) + " pixels",
-                     ExitCode::invalid_option);
+    throw OptionError("{size} " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                      ": each side must be 1 to " + std::to_string(kMaxImageSide) + " pixels");
   if (options.samples < 1 || options.samples > 4)
     throw InputError("render samples: expected 1 to 4 per side, got " + std::to_string(options.samples),
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
   if (!(options.margin >= 0.0 && options.margin <= 0.45))
     throw InputError("render margin: expected 0 to 0.45, got " + std::to_string(options.margin),
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
 }
 
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {

@@ -6,7 +6,7 @@
 #include <iterator>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/atomic_write.h"
 
 namespace meshquilt {
@@ -64,7 +64,7 @@ class Reader {
     if (count > (bytes_.size() - at_) / bytes) fail("truncated (ends inside its arrays)");
   }
   [[noreturn]] void fail(const std::string& problem) const {
-    throw InputError(name_ + ": " + problem, ExitCode::bad_texture);
+    throw InputError(name_ + ": " + problem, ErrorKind::bad_texture);
   }
 
  private:
@@ -136,7 +136,7 @@ void write_texture_file(const std::filesystem::path& file, const QuiltTexture& t
 
 QuiltTexture read_texture_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, file.string() + ": cannot open");
+  if (!in) throw IoError(ErrorKind::file_unreadable, file.string() + ": cannot open");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   return parse_texture(bytes, file.string());
 }
@@ -213,10 +213,10 @@ void check_texture_base(const QuiltTexture& texture, const TriMesh& base, const 
     throw InputError(base_name + ": has " + std::to_string(base.num_vertices()) + " vertices and " +
                          std::to_string(base.num_faces()) + " faces; the texture was made over " +
                          std::to_string(texture.base_vertices) + " and " + std::to_string(texture.base_faces),
-                     ExitCode::base_mismatch);
+                     ErrorKind::base_mismatch);
   if (connectivity_hash(base) != texture.base_connectivity)
     throw InputError(base_name + ": its faces connect other vertices than the base the texture was made over",
-                     ExitCode::base_mismatch);
+                     ErrorKind::base_mismatch);
 }
 
 }  // namespace meshquilt

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {

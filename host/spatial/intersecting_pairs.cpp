@@ -5,7 +5,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
-#include "error.h"
+#include "core/error.h"
 #include "spatial/face_bvh.h"
 #include "spatial/triangle_intersection.h"
 

@@ -11,7 +11,7 @@
 #include <span>
 #include <system_error>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/atomic_write.h"
 #include "mesh/populate_pages.h"
 

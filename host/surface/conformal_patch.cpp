@@ -10,7 +10,7 @@
 #include <Eigen/Sparse>
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "numerics/sparse_solve.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"

@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "numerics/sparse_solve.h"
 #include "mesh/atomic_write.h"
 
@@ -29,15 +29,15 @@ Vec3 any_tangent(const Vec3& n) {
 
 Vec3 parse_vector(const nlohmann::json& value, const std::string& what, const std::string& where) {
   if (!value.is_array() || value.size() != 3)
-    throw InputError(where + ": '" + what + "' must be an array of three numbers", ExitCode::invalid_option);
+    throw InputError(where + ": '" + what + "' must be an array of three numbers", ErrorKind::invalid_option);
   Vec3 v;
   for (int k = 0; k < 3; ++k) {
     if (!value[k].is_number())
-      throw InputError(where + ": '" + what + "' must be an array of three numbers", ExitCode::invalid_option);
+      throw InputError(where + ": '" + what + "' must be an array of three numbers", ErrorKind::invalid_option);
     v[k] = value[k].get<double>();
   }
   if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-    throw InputError(where + ": '" + what + "' is not finite", ExitCode::invalid_option);
+    throw InputError(where + ": '" + what + "' is not finite", ErrorKind::invalid_option);
   return v;
 }
 
@@ -79,28 +79,28 @@ std::vector<FieldConstraint> parse_field(std::string_view text, const std::strin
   try {
     document = nlohmann::json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(name + ": not valid JSON (" + std::string(e.what()) + ")", ExitCode::invalid_option);
+    throw InputError(name + ": not valid JSON (" + std::string(e.what()) + ")", ErrorKind::invalid_option);
   }
   if (!document.is_object() || !document.contains("directions") || !document["directions"].is_array())
-    throw InputError(name + ": expected an object with a 'directions' array", ExitCode::invalid_option);
+    throw InputError(name + ": expected an object with a 'directions' array", ErrorKind::invalid_option);
   std::vector<FieldConstraint> constraints;
   size_t index = 0;
   for (const nlohmann::json& entry : document["directions"]) {
     const std::string where = name + ": directions[" + std::to_string(index++) + "]";
     if (!entry.is_object() || !entry.contains("direction"))
-      throw InputError(where + ": needs a 'direction'", ExitCode::invalid_option);
+      throw InputError(where + ": needs a 'direction'", ErrorKind::invalid_option);
     FieldConstraint c;
     c.direction = parse_vector(entry["direction"], "direction", where);
     if (glm::length(c.direction) == 0.0)
-      throw InputError(where + ": the direction is zero", ExitCode::invalid_option);
+      throw InputError(where + ": the direction is zero", ErrorKind::invalid_option);
     if (entry.contains("vertex")) {
       if (!entry["vertex"].is_number_integer())
-        throw InputError(where + ": 'vertex' must be an integer", ExitCode::invalid_option);
+        throw InputError(where + ": 'vertex' must be an integer", ErrorKind::invalid_option);
       const int64_t v = entry["vertex"].get<int64_t>();
       if (v < 0 || v >= static_cast<int64_t>(base.num_vertices()))
         throw InputError(where + ": vertex " + std::to_string(v) + " does not exist (the base has " +
                              std::to_string(base.num_vertices()) + " vertices after welding)",
-                         ExitCode::invalid_option);
+                         ErrorKind::invalid_option);
       c.vertex = static_cast<int32_t>(v);
     } else if (entry.contains("point")) {
       const Vec3 p = parse_vector(entry["point"], "point", where);
@@ -116,9 +116,9 @@ std::vector<FieldConstraint> parse_field(std::string_view text, const std::strin
           c.vertex = static_cast<int32_t>(v);
         }
       }
-      if (c.vertex < 0) throw InputError(where + ": the base has no vertices", ExitCode::invalid_option);
+      if (c.vertex < 0) throw InputError(where + ": the base has no vertices", ErrorKind::invalid_option);
     } else {
-      throw InputError(where + ": needs a 'vertex' or a 'point'", ExitCode::invalid_option);
+      throw InputError(where + ": needs a 'vertex' or a 'point'", ErrorKind::invalid_option);
     }
     constraints.push_back(c);
   }
@@ -127,7 +127,7 @@ std::vector<FieldConstraint> parse_field(std::string_view text, const std::strin
 
 std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, const TriMesh& base) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, file.string() + ": cannot read the field file");
+  if (!in) throw IoError(ErrorKind::file_unreadable, file.string() + ": cannot read the field file");
   std::stringstream text;
   text << in.rdbuf();
   return parse_field(text.str(), file.string(), base);

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "quilt/broken_elements.h"
@@ -68,9 +68,9 @@ double field_angle(const BaseSurface& base, const SurfacePatch& patch, const Sur
 SurfaceQuilt quilt_surface(const TriMesh& input_swatch, const TriMesh& base_mesh, const GuidanceField& field,
                       engine::Device& device, const SurfaceQuiltOptions& options, SurfaceQuiltStats* stats_out) {
   if (!(options.scale > 0.0) || !std::isfinite(options.scale))
-    throw InputError("--scale must be positive", ExitCode::invalid_option);
+    throw OptionError("{scale} must be positive");
   if (options.shell_height < 0.0 || !std::isfinite(options.shell_height))
-    throw InputError("--shell-height must not be negative", ExitCode::invalid_option);
+    throw OptionError("{shell_height} must not be negative");
   SurfaceQuiltStats stats;
   auto& seconds = stats.stage_seconds;
   const auto check_cancel = [&] {

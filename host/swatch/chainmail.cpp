@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "swatch/tube_mesh.h"
 
 namespace meshquilt {
@@ -77,21 +77,23 @@ bool circles_linked(const Ring& a, const Ring& b, double radius) {
   return piercings % 2 == 1;
 }
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw InputError("chainmail: " + message, ExitCode::invalid_option);
+// Messages name the parameters at fault as {name} (OptionError).
+[[noreturn]] void invalid(const std::string& message) { throw OptionError("chainmail: " + message); }
+[[noreturn]] void invalid(const std::string& parameter, const std::string& problem) {
+  invalid("{" + parameter + "} " + problem);
 }
 
 void validate(const ChainmailOptions& o) {
-  if (o.rows < 2 || o.rows % 2 != 0) invalid("--rows must be an even number >= 2 (got " + std::to_string(o.rows) + ")");
-  if (o.columns < 1) invalid("--columns must be >= 1 (got " + std::to_string(o.columns) + ")");
-  if (o.ring_segments < 8) invalid("--ring-segments must be >= 8");
-  if (o.wire_segments < 3) invalid("--wire-segments must be >= 3");
-  if (!(o.ring_radius > 0.0) || !std::isfinite(o.ring_radius)) invalid("--ring-radius must be positive");
+  if (o.rows < 2 || o.rows % 2 != 0) invalid("rows", "must be an even number >= 2 (got " + std::to_string(o.rows) + ")");
+  if (o.columns < 1) invalid("columns", "must be >= 1 (got " + std::to_string(o.columns) + ")");
+  if (o.ring_segments < 8) invalid("ring_segments", "must be >= 8");
+  if (o.wire_segments < 3) invalid("wire_segments", "must be >= 3");
+  if (!(o.ring_radius > 0.0) || !std::isfinite(o.ring_radius)) invalid("ring_radius", "must be positive");
   if (!(o.wire_radius > 0.0) || !(o.wire_radius < 0.5 * o.ring_radius))
-    invalid("--wire-radius must be positive and below half the ring radius");
+    invalid("wire_radius", "must be positive and below half the ring radius");
   if (!(o.pitch_x > 0.0) || !(o.pitch_y > 0.0) || !std::isfinite(o.pitch_x) || !std::isfinite(o.pitch_y))
-    invalid("--pitch-x and --pitch-y must be positive");
-  if (!(o.tilt_degrees > 0.0 && o.tilt_degrees < 90.0)) invalid("--tilt must lie in (0, 90) degrees");
+    invalid("pitch_x", "and {pitch_y} must be positive");
+  if (!(o.tilt_degrees > 0.0 && o.tilt_degrees < 90.0)) invalid("tilt", "must lie in (0, 90) degrees");
 
   // Every pair of lattice rings near enough to touch or link, from a ring of each row parity:
   // the diagonal neighbours (one row over, half a pitch aside) must link, no other pair may, and
@@ -113,14 +115,14 @@ void validate(const ChainmailOptions& o) {
         if (circles_linked(a, b, R) != diagonal) {
           std::ostringstream m;
           m << "rings offset by (" << offset.x << ", " << offset.y << ") " << (diagonal ? "do not link" : "link")
-            << ": --pitch-x/--pitch-y/--tilt/--ring-radius do not give a 4-in-1 weave";
+            << ": {pitch_x}/{pitch_y}/{tilt}/{ring_radius} do not give a 4-in-1 weave";
           invalid(m.str());
         }
         const double clearance = circle_clearance(a, b, R);
         if (clearance <= needed) {
           std::ostringstream m;
           m << "neighbouring rings would touch: their wire centrelines come within " << clearance
-            << ", which needs to exceed " << needed << " (--wire-radius " << o.wire_radius
+            << ", which needs to exceed " << needed << " ({wire_radius} " << o.wire_radius
             << " with the facets); use a thinner wire or wider pitches";
           invalid(m.str());
         }

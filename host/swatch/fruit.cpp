@@ -8,15 +8,17 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "swatch/layer_packing.h"
 #include "swatch/swatch_random.h"
 
 namespace meshquilt {
 namespace {
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw InputError("fruit: " + message, ExitCode::invalid_option);
+// Messages name the parameters at fault as {name} (OptionError).
+[[noreturn]] void invalid(const std::string& message) { throw OptionError("fruit: " + message); }
+[[noreturn]] void invalid(const std::string& parameter, const std::string& problem) {
+  invalid("{" + parameter + "} " + problem);
 }
 
 // Unit sphere: an icosahedron with `subdivisions` rounds of midpoint splitting, faces
@@ -103,12 +105,12 @@ FruitOptions FruitOptions::small() {
 }
 
 TriMesh make_fruit(const FruitOptions& o) {
-  if (o.columns < 1 || o.rows < 1) invalid("--columns and --rows must be >= 1");
+  if (o.columns < 1 || o.rows < 1) invalid("columns", "and {rows} must be >= 1");
   if (static_cast<long>(o.columns) * o.rows > 100000) invalid("more than 100000 fruit");
-  if (o.subdivisions < 1 || o.subdivisions > 6) invalid("--subdivisions must lie in 1..6");
-  if (!(o.radius > 0.0) || !std::isfinite(o.radius)) invalid("--radius must be positive");
-  if (!(o.gap > 0.0) || !std::isfinite(o.gap)) invalid("--gap must be positive");
-  if (!(o.size_variation >= 0.0 && o.size_variation <= 0.5)) invalid("--size-variation must lie in [0, 0.5]");
+  if (o.subdivisions < 1 || o.subdivisions > 6) invalid("subdivisions", "must lie in 1..6");
+  if (!(o.radius > 0.0) || !std::isfinite(o.radius)) invalid("radius", "must be positive");
+  if (!(o.gap > 0.0) || !std::isfinite(o.gap)) invalid("gap", "must be positive");
+  if (!(o.size_variation >= 0.0 && o.size_variation <= 0.5)) invalid("size_variation", "must lie in [0, 0.5]");
 
   const TriMesh sphere = icosphere(o.subdivisions);
   SwatchRandom random(o.seed);

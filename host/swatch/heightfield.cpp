@@ -5,13 +5,15 @@
 #include <numbers>
 #include <sstream>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw InputError("heightfield: " + message, ExitCode::invalid_option);
+// Messages name the parameters at fault as {name} (OptionError).
+[[noreturn]] void invalid(const std::string& message) { throw OptionError("heightfield: " + message); }
+[[noreturn]] void invalid(const std::string& parameter, const std::string& problem) {
+  invalid("{" + parameter + "} " + problem);
 }
 
 }  // namespace
@@ -57,28 +59,28 @@ GrayImage downsample_image(const GrayImage& image, int max_side) {
 }
 
 TriMesh make_heightfield(const HeightfieldOptions& o) {
-  if (o.max_resolution < 2) invalid("--max-resolution must be >= 2");
+  if (o.max_resolution < 2) invalid("max_resolution", "must be >= 2");
   if (o.image.values.empty() && (o.builtin_resolution < 2 || o.builtin_resolution > 4096)) {
-    invalid("--resolution must lie in 2..4096");
+    invalid("resolution", "must lie in 2..4096");
   }
   const GrayImage image =
       downsample_image(o.image.values.empty() ? builtin_height_image(o.builtin_resolution) : o.image, o.max_resolution);
   const int W = image.width, H = image.height;
   if (W < 2 || H < 2) invalid("the image needs at least 2 x 2 pixels (got " + std::to_string(W) + "x" + std::to_string(H) + ")");
-  if (!(o.size > 0.0) || !std::isfinite(o.size)) invalid("--size must be positive");
-  if (!(o.height >= 0.0) || !std::isfinite(o.height)) invalid("--height must be >= 0");
-  if (!o.open && (!(o.base > 0.0) || !std::isfinite(o.base))) invalid("--base must be positive for a closed slab");
+  if (!(o.size > 0.0) || !std::isfinite(o.size)) invalid("size", "must be positive");
+  if (!(o.height >= 0.0) || !std::isfinite(o.height)) invalid("height", "must be >= 0");
+  if (!o.open && (!(o.base > 0.0) || !std::isfinite(o.base))) invalid("base", "must be positive for a closed slab");
   const double spacing = o.size / (std::max(W, H) - 1);
   const double thinnest = spacing * (std::min(W, H) - 1);
   const double thickness = o.height + (o.open ? 0.0 : o.base);
   if (thickness >= thinnest) {
     std::ostringstream m;
-    m << "relief thickness " << thickness << " (--height" << (o.open ? "" : " + --base")
+    m << "relief thickness " << thickness << " ({height}" << (o.open ? "" : " + {base}")
       << ") must stay below the shorter side " << thinnest << " so that z is the thinnest axis";
     invalid(m.str());
   }
 
-  if (o.tiles < 1) invalid("--tiles must be >= 1");
+  if (o.tiles < 1) invalid("tiles", "must be >= 1");
   const int stride_x = W / o.tiles, stride_y = H / o.tiles;
   if (o.tiles > 1 && (stride_x < 3 || stride_y < 3)) {
     invalid(std::to_string(o.tiles) + " tiles a side leave fewer than 3 pixels per tile of a " + std::to_string(W) +

@@ -5,7 +5,7 @@
 #include <iterator>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
@@ -15,7 +15,7 @@ class Reader {
   Reader(std::string bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {}
 
   [[noreturn]] void fail(const std::string& problem) const {
-    throw IoError(ExitCode::file_unreadable, name_ + ": " + problem);
+    throw IoError(ErrorKind::file_unreadable, name_ + ": " + problem);
   }
 
   // Whitespace and comments may separate any two header tokens.
@@ -79,15 +79,15 @@ class Reader {
 GrayImage read_netpbm(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(ExitCode::file_unreadable, name + ": cannot open image");
+  if (!in) throw IoError(ErrorKind::file_unreadable, name + ": cannot open image");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw IoError(ExitCode::file_unreadable, name + ": read error");
+  if (in.bad()) throw IoError(ErrorKind::file_unreadable, name + ": read error");
   return parse_netpbm(std::move(bytes), name);
 }
 
 GrayImage parse_netpbm(std::string bytes, const std::string& name) {
   if (bytes.size() < 2 || bytes[0] != 'P' || bytes[1] < '1' || bytes[1] > '6') {
-    throw IoError(ExitCode::unknown_format, name + ": not a PBM/PGM/PPM image (no P1..P6 magic number)");
+    throw IoError(ErrorKind::unknown_format, name + ": not a PBM/PGM/PPM image (no P1..P6 magic number)");
   }
   const int kind = bytes[1] - '0';
   Reader reader(std::move(bytes), name);

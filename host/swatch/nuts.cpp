@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "swatch/layer_packing.h"
 #include "swatch/swatch_random.h"
 
@@ -13,8 +13,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw InputError("nuts: " + message, ExitCode::invalid_option);
+// Messages name the parameters at fault as {name} (OptionError).
+[[noreturn]] void invalid(const std::string& message) { throw OptionError("nuts: " + message); }
+[[noreturn]] void invalid(const std::string& parameter, const std::string& problem) {
+  invalid("{" + parameter + "} " + problem);
 }
 
 struct ProfilePoint {
@@ -48,18 +50,18 @@ NutOptions NutOptions::small() {
 }
 
 TriMesh make_nuts(const NutOptions& o) {
-  if (o.columns < 1 || o.rows < 1) invalid("--columns and --rows must be >= 1");
+  if (o.columns < 1 || o.rows < 1) invalid("columns", "and {rows} must be >= 1");
   if (static_cast<long>(o.columns) * o.rows > 100000) invalid("more than 100000 nuts");
   if (o.segments_per_side < 1 || o.wall_segments < 1 || o.face_segments < 1) invalid("segment counts must be >= 1");
   if (o.segments_per_side > 256 || o.wall_segments > 256 || o.face_segments > 256) invalid("segment counts must be <= 256");
-  if (!(o.across_flats > 0.0) || !std::isfinite(o.across_flats)) invalid("--across-flats must be positive");
+  if (!(o.across_flats > 0.0) || !std::isfinite(o.across_flats)) invalid("across_flats", "must be positive");
   const double inradius = 0.5 * o.across_flats;
   if (!(o.hole_radius > 0.0) || !(o.hole_radius < 0.9 * inradius)) {
-    invalid("--hole-radius must be positive and below 0.9x half of --across-flats (" + std::to_string(0.9 * inradius) + ")");
+    invalid("hole_radius", "must be positive and below 0.9x half of {across_flats} (" + std::to_string(0.9 * inradius) + ")");
   }
-  if (!(o.thickness > 0.0) || !(o.thickness < o.across_flats)) invalid("--thickness must be positive and below --across-flats");
-  if (!(o.gap > 0.0) || !std::isfinite(o.gap)) invalid("--gap must be positive");
-  if (!(o.size_variation >= 0.0 && o.size_variation <= 0.5)) invalid("--size-variation must lie in [0, 0.5]");
+  if (!(o.thickness > 0.0) || !(o.thickness < o.across_flats)) invalid("thickness", "must be positive and below {across_flats}");
+  if (!(o.gap > 0.0) || !std::isfinite(o.gap)) invalid("gap", "must be positive");
+  if (!(o.size_variation >= 0.0 && o.size_variation <= 0.5)) invalid("size_variation", "must lie in [0, 0.5]");
 
   SwatchRandom random(o.seed);
   const int count = o.columns * o.rows;

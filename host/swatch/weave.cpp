@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "error.h"
+#include "core/error.h"
 #include "swatch/tube_mesh.h"
 
 namespace meshquilt {
@@ -14,8 +14,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw InputError("weave: " + message, ExitCode::invalid_option);
+// Messages name the parameters at fault as {name} (OptionError).
+[[noreturn]] void invalid(const std::string& message) { throw OptionError("weave: " + message); }
+[[noreturn]] void invalid(const std::string& parameter, const std::string& problem) {
+  invalid("{" + parameter + "} " + problem);
 }
 
 // Height of a yarn centreline at parameter u (in pitches, crossing k centred at u = k + 1/2),
@@ -74,23 +76,23 @@ void validate(const WeaveOptions& o, int warps, int wefts) {
     invalid("empty or malformed pattern");
   }
   if (warps < 1 || (o.whole_repeats && warps % p.warps != 0)) {
-    invalid("--warps " + std::to_string(warps) + " is not a positive multiple of the pattern's " + std::to_string(p.warps) + " ends");
+    invalid("warps", std::to_string(warps) + " is not a positive multiple of the pattern's " + std::to_string(p.warps) + " ends");
   }
   if (wefts < 1 || (o.whole_repeats && wefts % p.wefts != 0)) {
-    invalid("--wefts " + std::to_string(wefts) + " is not a positive multiple of the pattern's " + std::to_string(p.wefts) + " picks");
+    invalid("wefts", std::to_string(wefts) + " is not a positive multiple of the pattern's " + std::to_string(p.wefts) + " picks");
   }
   if (warps > 4096 || wefts > 4096) invalid("more than 4096 yarns in a direction");
-  if (o.segments_per_pitch < 2) invalid("--segments must be >= 2");
-  if (o.sides < 3) invalid("--sides must be >= 3");
-  if (!(o.pitch > 0.0) || !std::isfinite(o.pitch)) invalid("--pitch must be positive");
-  if (!(o.yarn_radius > 0.0) || !std::isfinite(o.yarn_radius)) invalid("--yarn-radius must be positive");
-  if (!(o.amplitude > 0.0) || !std::isfinite(o.amplitude)) invalid("--amplitude must be positive");
+  if (o.segments_per_pitch < 2) invalid("segments", "must be >= 2");
+  if (o.sides < 3) invalid("sides", "must be >= 3");
+  if (!(o.pitch > 0.0) || !std::isfinite(o.pitch)) invalid("pitch", "must be positive");
+  if (!(o.yarn_radius > 0.0) || !std::isfinite(o.yarn_radius)) invalid("yarn_radius", "must be positive");
+  if (!(o.amplitude > 0.0) || !std::isfinite(o.amplitude)) invalid("amplitude", "must be positive");
 
   const double curvature = o.amplitude * kPi * kPi / (o.pitch * o.pitch);  // at a crossing, the largest
   if (o.yarn_radius * curvature >= 0.9) {
     std::ostringstream m;
-    m << "--yarn-radius " << o.yarn_radius << " exceeds 0.9x the centreline's radius of curvature "
-      << 1.0 / curvature << ": the yarn would fold; lower --amplitude or --yarn-radius";
+    m << "{yarn_radius} " << o.yarn_radius << " exceeds 0.9x the centreline's radius of curvature "
+      << 1.0 / curvature << ": the yarn would fold; lower {amplitude} or {yarn_radius}";
     invalid(m.str());
   }
   // On the inside of a bend the tube's surface is concave along the yarn, so the facets there
@@ -102,7 +104,7 @@ void validate(const WeaveOptions& o, int warps, int wefts) {
   const double needed = 2.0 * (o.yarn_radius + bulge);
   if (o.pitch <= needed) {
     std::ostringstream m;
-    m << "--pitch " << o.pitch << " must exceed the yarn diameter " << needed << " so that parallel yarns do not touch";
+    m << "{pitch} " << o.pitch << " must exceed the yarn diameter " << needed << " so that parallel yarns do not touch";
     invalid(m.str());
   }
   // A single direction has no crossings; its crimp is only a shape.
@@ -124,7 +126,7 @@ void validate(const WeaveOptions& o, int warps, int wefts) {
       if (clearance <= needed) {
         std::ostringstream m;
         m << "yarns would touch at crossing (warp " << i << ", weft " << j << "): centrelines come within " << clearance
-          << ", which needs to exceed " << needed << "; raise --amplitude or lower --yarn-radius";
+          << ", which needs to exceed " << needed << "; raise {amplitude} or lower {yarn_radius}";
         invalid(m.str());
       }
     }

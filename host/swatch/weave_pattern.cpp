@@ -4,7 +4,7 @@
 #include <numeric>
 #include <regex>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
@@ -12,13 +12,15 @@ namespace {
 constexpr int kMaxEnds = 64;
 constexpr int kMaxImageYarns = 1024;
 
-[[noreturn]] void invalid(const std::string& message) {
-  throw InputError("weave: " + message, ExitCode::invalid_option);
+// Messages name the parameters at fault as {name} (OptionError).
+[[noreturn]] void invalid(const std::string& message) { throw OptionError("weave: " + message); }
+[[noreturn]] void invalid(const std::string& parameter, const std::string& problem) {
+  invalid("{" + parameter + "} " + problem);
 }
 
 void check_counts(const char* family, int over, int under) {
   if (over < 1 || under < 1 || over + under > kMaxEnds) {
-    invalid(std::string("--pattern ") + family + ":" + std::to_string(over) + "/" + std::to_string(under) +
+    invalid("pattern", std::string(family) + ":" + std::to_string(over) + "/" + std::to_string(under) +
             " needs 1 <= M, N and M+N <= " + std::to_string(kMaxEnds));
   }
 }
@@ -53,7 +55,7 @@ WeavePattern satin_pattern(int over, int under) {
   check_counts("satin", over, under);
   const int step = satin_step(over + under);
   if (step == 0) {
-    invalid("--pattern satin:" + std::to_string(over) + "/" + std::to_string(under) + " is not a regular satin: no step s with 1 < s < " +
+    invalid("pattern", "satin:" + std::to_string(over) + "/" + std::to_string(under) + " is not a regular satin: no step s with 1 < s < " +
             std::to_string(over + under - 1) + " coprime to " + std::to_string(over + under));
   }
   return shifted_pattern(over, under, step);
@@ -61,7 +63,7 @@ WeavePattern satin_pattern(int over, int under) {
 
 WeavePattern image_pattern(const GrayImage& image) {
   if (image.width > kMaxImageYarns || image.height > kMaxImageYarns) {
-    invalid("--pattern image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+    invalid("pattern", "image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
             ", more than " + std::to_string(kMaxImageYarns) + " yarns a side");
   }
   WeavePattern p;
@@ -89,7 +91,7 @@ WeavePattern parse_weave_pattern(const std::string& spec) {
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const bool image_ext = ext == ".pbm" || ext == ".pgm" || ext == ".ppm" || ext == ".pnm";
   if (spec.rfind("twill", 0) == 0 || spec.rfind("satin", 0) == 0 || (!image_ext && !std::filesystem::exists(path))) {
-    invalid("--pattern '" + spec + "' is not plain, twill:M/N, satin:M/N or a PBM/PGM image file");
+    invalid("pattern", "'" + spec + "' is not plain, twill:M/N, satin:M/N or a PBM/PGM image file");
   }
   return image_pattern(read_netpbm(path));
 }

@@ -154,7 +154,7 @@ TEST_F(InspectCli, RegionReplacesTheFootprint) {
   EXPECT_NEAR(nlohmann::json::parse(wide.out).at("coverage").get<double>(), 3.0 / 8.0, 1e-12);
   EXPECT_EQ(run({ring_file.string(), "--region", "0,0,1,1"}).code, 2);  // needs --plane
   const CliRun empty = run({ring_file.string(), "--plane", "--region", "0,0,0,1"});
-  EXPECT_EQ(empty.code, 6);  // ExitCode::invalid_option
+  EXPECT_EQ(empty.code, 6);  // ErrorKind::invalid_option
   EXPECT_TRUE(one_line_naming(empty.err, "region")) << empty.err;
 }
 
@@ -170,11 +170,11 @@ TEST_F(InspectCli, BrokenAndMissingFilesGiveOneLineErrors) {
   const fs::path flat = dir_ / "collapsed.obj";
   std::ofstream(flat) << "v 0 0 0\nv 0 0 0\nv 1 1 1\nf 1 2 3\n";
   const CliRun collapsed = run({flat.string()});
-  EXPECT_EQ(collapsed.code, 5);  // ExitCode::invalid_mesh
+  EXPECT_EQ(collapsed.code, 5);  // ErrorKind::invalid_mesh
   EXPECT_TRUE(one_line_naming(collapsed.err, "collapsed.obj")) << collapsed.err;
 
   const CliRun missing = run({(dir_ / "nowhere.ply").string()});
-  EXPECT_EQ(missing.code, 3);  // ExitCode::file_unreadable
+  EXPECT_EQ(missing.code, 3);  // ErrorKind::file_unreadable
   EXPECT_TRUE(one_line_naming(missing.err, "nowhere.ply")) << missing.err;
 
   const CliRun both = run({broken.string(), "--plane", "--base", broken.string()});

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
 #include "probe.h"
 #include "probe_layout.h"
 
@@ -78,7 +78,7 @@ TEST(Engine, ParsesBackendChoices) {
     engine::parse_backend_choice("cuda");
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
-    EXPECT_EQ(error.code(), ExitCode::invalid_option);
+    EXPECT_EQ(error.kind(), ErrorKind::invalid_option);
     EXPECT_NE(std::string(error.what()).find("cuda"), std::string::npos);
   }
   EXPECT_STREQ(engine::backend_name(Backend::cpu), "cpu");

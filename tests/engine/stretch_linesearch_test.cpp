@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
 #include "stretch_linesearch.h"
 
 namespace {

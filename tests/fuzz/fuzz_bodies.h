@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/memory_budget.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"

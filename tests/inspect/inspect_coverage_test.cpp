@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "inspect/coverage.h"
 #include "inspect/element_statistics.h"
 #include "inspect/inspect_report.h"

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/atomic_write.h"
 #include "mesh/mesh_io.h"
 #include "support/run_cli.h"
@@ -44,7 +44,7 @@ TEST(AtomicWrite, FailedRenameRemovesTheTemporary) {
     write_file_atomic(dir / "target", "data");
     FAIL() << "accepted";
   } catch (const IoError& e) {
-    EXPECT_EQ(e.code(), ExitCode::write_failed);
+    EXPECT_EQ(e.kind(), ErrorKind::write_failed);
     EXPECT_NE(std::string(e.what()).find("target"), std::string::npos);
   }
   EXPECT_EQ(count_files(dir), 1u);  // only the folder

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -10,7 +12,7 @@
 #include <set>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
 #include "support/surface_fixtures.h"
@@ -58,11 +60,11 @@ void expect_same_oriented_faces(const TriMesh& prepared, const TriMesh& referenc
   EXPECT_EQ(wrong, 0);
 }
 
-std::string error_message(const std::function<void()>& body, ExitCode* code = nullptr) {
+std::string error_message(const std::function<void()>& body, std::optional<ErrorKind>* code = nullptr) {
   try {
     body();
   } catch (const InputError& e) {
-    if (code) *code = e.code();
+    if (code) *code = e.kind();
     return e.what();
   }
   ADD_FAILURE() << "no InputError";
@@ -196,9 +198,9 @@ TEST(PrepareBase, MoebiusStripIsRefused) {
     m.triangles.push_back({a, c, d});
     m.triangles.push_back({a, d, b});
   }
-  ExitCode code{};
+  std::optional<ErrorKind> code;
   const std::string message = error_message([&] { prepare_base(m, "moebius.obj"); }, &code);
-  EXPECT_EQ(code, ExitCode::invalid_mesh);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
   EXPECT_EQ(message.rfind("moebius.obj: ", 0), 0u) << message;
   EXPECT_NE(message.find("non-orientable"), std::string::npos) << message;
 }
@@ -207,9 +209,9 @@ TEST(PrepareBase, ThreeFacesOnOneEdgeAreRefused) {
   TriMesh m;
   m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(0.5, -1, 0), Vec3(0.5, 0, 1)};
   m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
-  ExitCode code{};
+  std::optional<ErrorKind> code;
   const std::string message = error_message([&] { prepare_base(m, "fins.off"); }, &code);
-  EXPECT_EQ(code, ExitCode::invalid_mesh);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
   EXPECT_EQ(message.rfind("fins.off: ", 0), 0u) << message;
   EXPECT_NE(message.find("non-manifold"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos);
@@ -221,33 +223,33 @@ TEST(PrepareBase, NonManifoldOnlyAfterWeldingIsRefused) {
   m.positions = {Vec3(0, 0, 0),    Vec3(1, 0, 0), Vec3(0.5, 1, 0), Vec3(0, 0, 0),  Vec3(1, 0, 0),
                  Vec3(0.5, -1, 0), Vec3(0, 0, 0), Vec3(1, 0, 0),   Vec3(0.5, 0, 1)};
   m.triangles = {{0, 1, 2}, {4, 3, 5}, {6, 7, 8}};
-  ExitCode code{};
+  std::optional<ErrorKind> code;
   error_message([&] { prepare_base(m, "welded.obj"); }, &code);
-  EXPECT_EQ(code, ExitCode::invalid_mesh);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
 }
 
 TEST(PrepareBase, NanCoordinateAndNoFacesAreRefused) {
   TriMesh nan = test::flat_grid(2, 2, 1.0);
   nan.positions[4].y = std::numeric_limits<double>::quiet_NaN();
-  ExitCode code{};
+  std::optional<ErrorKind> code;
   std::string message = error_message([&] { prepare_base(nan, "nan.off"); }, &code);
-  EXPECT_EQ(code, ExitCode::invalid_mesh);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
   EXPECT_EQ(message.rfind("nan.off: ", 0), 0u) << message;
 
   TriMesh empty;
   empty.positions = {Vec3(0.0), Vec3(1.0, 0.0, 0.0)};
-  code = ExitCode::ok;
+  code = std::nullopt;
   message = error_message([&] { prepare_base(empty, "empty.off"); }, &code);
-  EXPECT_EQ(code, ExitCode::invalid_mesh);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
   EXPECT_EQ(message.rfind("empty.off: ", 0), 0u) << message;
 
   // Every face collapses when welded: nothing is left.
   TriMesh collapsed;
   collapsed.positions = {Vec3(0.0), Vec3(1e-12, 0.0, 0.0), Vec3(0.0, 1e-12, 0.0), Vec3(1.0, 1.0, 1.0)};
   collapsed.triangles = {{0, 1, 2}};
-  code = ExitCode::ok;
+  code = std::nullopt;
   message = error_message([&] { prepare_base(collapsed, "dust.obj"); }, &code);
-  EXPECT_EQ(code, ExitCode::invalid_mesh);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
   EXPECT_EQ(message.rfind("dust.obj: ", 0), 0u) << message;
 }
 

@@ -2,6 +2,8 @@
 // independent reference reader, and garbage / truncated input that must fail cleanly.
 
 #include <gtest/gtest.h>
+
+#include <optional>
 #include <glm/common.hpp>
 #include <unistd.h>
 
@@ -18,7 +20,7 @@
 #include <sstream>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "mesh/validation.h"
 
@@ -76,13 +78,13 @@ void expect_same_mesh(const TriMesh& a, const TriMesh& b, bool with_elements) {
 }
 
 template <typename F>
-ExitCode code_of(F&& f) {
+std::optional<ErrorKind> code_of(F&& f) {
   try {
     f();
   } catch (const Error& e) {
-    return e.code();
+    return e.kind();
   }
-  return ExitCode::ok;
+  return std::nullopt;
 }
 
 TEST_F(MeshIoTest, RoundTripsExactlyWithElements) {
@@ -131,16 +133,16 @@ TEST_F(MeshIoTest, WriteLeavesNoTemporaryAndOverwrites) {
 
 TEST_F(MeshIoTest, WriteFailuresAreTypedAndClean) {
   const TriMesh mesh = two_tetrahedra();
-  EXPECT_EQ(code_of([&] { write_mesh(mesh, path("missing_dir") / "out.ply"); }), ExitCode::write_failed);
-  EXPECT_EQ(code_of([&] { write_mesh(mesh, path("out.xyz")); }), ExitCode::unknown_format);
+  EXPECT_EQ(code_of([&] { write_mesh(mesh, path("missing_dir") / "out.ply"); }), ErrorKind::write_failed);
+  EXPECT_EQ(code_of([&] { write_mesh(mesh, path("out.xyz")); }), ErrorKind::unknown_format);
   // The target is a non-empty directory: the rename fails, the directory survives, no temp is left.
   fs::create_directories(path("taken.obj") / "inside");
-  EXPECT_EQ(code_of([&] { write_mesh(mesh, path("taken.obj")); }), ExitCode::write_failed);
+  EXPECT_EQ(code_of([&] { write_mesh(mesh, path("taken.obj")); }), ErrorKind::write_failed);
   EXPECT_TRUE(fs::is_directory(path("taken.obj") / "inside"));
   EXPECT_EQ(files_in_dir(), 1u);
   TriMesh bad = mesh;
   bad.elements.pop_back();
-  EXPECT_EQ(code_of([&] { write_mesh(bad, path("bad.ply")); }), ExitCode::write_failed);
+  EXPECT_EQ(code_of([&] { write_mesh(bad, path("bad.ply")); }), ErrorKind::write_failed);
   EXPECT_FALSE(fs::exists(path("bad.ply")));
 }
 
@@ -326,11 +328,11 @@ TEST_F(MeshIoTest, StlAsciiAndBinaryShareCorners) {
 }
 
 TEST_F(MeshIoTest, OpenErrorsAndFormatErrors) {
-  EXPECT_EQ(code_of([&] { read_mesh(path("nothing.obj")); }), ExitCode::file_unreadable);
+  EXPECT_EQ(code_of([&] { read_mesh(path("nothing.obj")); }), ErrorKind::file_unreadable);
   fs::create_directories(path("dir.obj"));
-  EXPECT_EQ(code_of([&] { read_mesh(path("dir.obj")); }), ExitCode::file_unreadable);
-  EXPECT_EQ(code_of([&] { read_mesh(write_text("x.3ds", "v 0 0 0")); }), ExitCode::unknown_format);
-  EXPECT_EQ(code_of([&] { read_mesh(write_text("upper.OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }), ExitCode::ok);
+  EXPECT_EQ(code_of([&] { read_mesh(path("dir.obj")); }), ErrorKind::file_unreadable);
+  EXPECT_EQ(code_of([&] { read_mesh(write_text("x.3ds", "v 0 0 0")); }), ErrorKind::unknown_format);
+  EXPECT_EQ(code_of([&] { read_mesh(write_text("upper.OBJ", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); }), std::nullopt);
   try {
     read_mesh(path("nothing.obj"));
   } catch (const IoError& e) {
@@ -376,7 +378,7 @@ TEST_F(MeshIoTest, InvalidContentIsInputError) {
       read_mesh(p);
       ADD_FAILURE() << name << ": no error";
     } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), ExitCode::invalid_mesh) << name;
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_mesh) << name;
       EXPECT_EQ(std::string(e.what()).rfind(p.string() + ": ", 0), 0u) << name << ": " << e.what();
     } catch (const std::exception& e) {
       ADD_FAILURE() << name << ": wrong exception type: " << e.what();

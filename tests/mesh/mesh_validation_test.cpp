@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/validation.h"
 
 namespace meshquilt {
@@ -25,7 +25,7 @@ void expect_invalid(const TriMesh& m, const std::string& fragment) {
     ADD_FAILURE() << "no error for: " << fragment;
   } catch (const InputError& e) {
     const std::string message = e.what();
-    EXPECT_EQ(e.code(), ExitCode::invalid_mesh);
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_mesh);
     EXPECT_EQ(message.rfind("base.off: ", 0), 0u) << message;
     EXPECT_NE(message.find(fragment), std::string::npos) << message;
   }

@@ -3,13 +3,15 @@
 // The allocation bound is measured by counting every operator new of this test executable.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <new>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/memory_budget.h"
 #include "mesh/mesh_io.h"
 #include "swatch/netpbm.h"
@@ -55,7 +57,7 @@ namespace {
 constexpr size_t kAllocationBound = 4u << 20;  // "a few MB"
 
 struct Refusal {
-  ExitCode code = ExitCode::ok;
+  std::optional<ErrorKind> code;
   std::string message;
   size_t peak_bytes = 0;  // most bytes live at once during the call, above what was live before
 };
@@ -69,14 +71,14 @@ Refusal refusal(F&& call) {
     call();
     ADD_FAILURE() << "accepted";
   } catch (const Error& e) {
-    r.code = e.code();
+    r.code = e.kind();
     r.message = e.what();
   }
   r.peak_bytes = g_peak.load() - before;
   return r;
 }
 
-void expect_refused(const Refusal& r, ExitCode code, const std::string& needle) {
+void expect_refused(const Refusal& r, ErrorKind code, const std::string& needle) {
   EXPECT_EQ(r.code, code) << r.message;
   EXPECT_NE(r.message.find(needle), std::string::npos) << r.message;
   EXPECT_EQ(r.message.find('\n'), std::string::npos) << r.message;
@@ -96,13 +98,13 @@ std::string huge_face_ply(const char* format) {
 
 TEST(ReaderLimits, PlyAsciiHeaderDeclaringTwoToThe31Faces) {
   const std::string data = huge_face_ply("ascii");
-  expect_refused(refusal([&] { parse_mesh(data, ".ply", "huge.ply"); }), ExitCode::invalid_mesh,
+  expect_refused(refusal([&] { parse_mesh(data, ".ply", "huge.ply"); }), ErrorKind::invalid_mesh,
                  "huge.ply: PLY header declares 2147483648 'face' items");
 }
 
 TEST(ReaderLimits, PlyBinaryHeaderDeclaringTwoToThe31Faces) {
   const std::string data = huge_face_ply("binary_little_endian");
-  expect_refused(refusal([&] { parse_mesh(data, ".ply", "huge.ply"); }), ExitCode::invalid_mesh,
+  expect_refused(refusal([&] { parse_mesh(data, ".ply", "huge.ply"); }), ErrorKind::invalid_mesh,
                  "more than the");
 }
 
@@ -110,24 +112,24 @@ TEST(ReaderLimits, PlyElementWithoutPropertiesAndAHugeCount) {
   // Items without properties take no bytes: without a limit this loops 2^62 times.
   const std::string data =
       "ply\nformat binary_little_endian 1.0\nelement nothing 4611686018427387904\nend_header\n";
-  expect_refused(refusal([&] { parse_mesh(data, ".ply", "empty.ply"); }), ExitCode::invalid_mesh, "4611686018427387904");
+  expect_refused(refusal([&] { parse_mesh(data, ".ply", "empty.ply"); }), ErrorKind::invalid_mesh, "4611686018427387904");
 }
 
 TEST(ReaderLimits, ObjFaceIndexTwoToThe40) {
   const std::string data = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 1099511627776\n";
-  expect_refused(refusal([&] { parse_mesh(data, ".obj", "big.obj"); }), ExitCode::invalid_mesh,
+  expect_refused(refusal([&] { parse_mesh(data, ".obj", "big.obj"); }), ErrorKind::invalid_mesh,
                  "big.obj: line 4: face index 1099511627776 out of range");
 }
 
 TEST(ReaderLimits, OffNegativeCount) {
   const std::string data = "OFF\n-5 1 0\n0 0 0\n";
-  expect_refused(refusal([&] { parse_mesh(data, ".off", "neg.off"); }), ExitCode::invalid_mesh,
+  expect_refused(refusal([&] { parse_mesh(data, ".off", "neg.off"); }), ErrorKind::invalid_mesh,
                  "neg.off: line 2: bad vertex count '-5'");
 }
 
 TEST(ReaderLimits, OffCountsBeyondTheFile) {
   const std::string data = "OFF\n2000000000 2000000000 0\n0 0 0\n";
-  expect_refused(refusal([&] { parse_mesh(data, ".off", "big.off"); }), ExitCode::invalid_mesh,
+  expect_refused(refusal([&] { parse_mesh(data, ".off", "big.off"); }), ErrorKind::invalid_mesh,
                  "OFF header declares 2000000000 vertices");
 }
 
@@ -136,16 +138,16 @@ TEST(ReaderLimits, StlBinaryCountBeyondTheFile) {
   const uint32_t count = 0x7FFFFFFF;
   std::memcpy(data.data() + 80, &count, 4);
   data.resize(200, '\0');
-  expect_refused(refusal([&] { parse_mesh(data, ".stl", "big.stl"); }), ExitCode::invalid_mesh,
+  expect_refused(refusal([&] { parse_mesh(data, ".stl", "big.stl"); }), ErrorKind::invalid_mesh,
                  "binary STL size does not match");
 }
 
 TEST(ReaderLimits, NetpbmHeaderDeclaringAGigapixel) {
   expect_refused(refusal([&] { parse_netpbm("P5\n32768 32768\n255\n\x01\x02", "big.pgm"); }),
-                 ExitCode::file_unreadable, "big.pgm: header declares 32768 x 32768 pixels");
-  expect_refused(refusal([&] { parse_netpbm("P1\n32768 32768\n0101", "big.pbm"); }), ExitCode::file_unreadable,
+                 ErrorKind::file_unreadable, "big.pgm: header declares 32768 x 32768 pixels");
+  expect_refused(refusal([&] { parse_netpbm("P1\n32768 32768\n0101", "big.pbm"); }), ErrorKind::file_unreadable,
                  "declares 32768 x 32768");
-  expect_refused(refusal([&] { parse_netpbm("P4\n32768 32768\n\x01", "big.pbm"); }), ExitCode::file_unreadable,
+  expect_refused(refusal([&] { parse_netpbm("P4\n32768 32768\n\x01", "big.pbm"); }), ErrorKind::file_unreadable,
                  "declares 32768 x 32768");
 }
 
@@ -160,7 +162,7 @@ TEST(ReaderLimits, MeshBeyondTheMemoryBudget) {
   set_memory_budget(16 * 1024);
   const Refusal r = refusal([&] { parse_mesh(data, ".ply", "budget.ply"); });
   set_memory_budget(0);
-  expect_refused(r, ExitCode::too_large, "raise it with --max-memory");
+  expect_refused(r, ErrorKind::too_large, "raise it with max_memory");
   EXPECT_NO_THROW(parse_mesh(data, ".ply", "budget.ply"));
 }
 
@@ -175,8 +177,8 @@ TEST(MemoryBudget, ParsesSizes) {
       parse_memory_size(bad);
       ADD_FAILURE() << bad;
     } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), ExitCode::invalid_option);
-      EXPECT_NE(std::string(e.what()).find("--max-memory"), std::string::npos);
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_option);
+      EXPECT_NE(e.text().find("{max_memory}"), std::string::npos);  // the CLI names it --max-memory
     }
   }
 }

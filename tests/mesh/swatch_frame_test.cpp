@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/validation.h"
 
@@ -104,7 +104,7 @@ TEST(SwatchFrame, DegenerateSwatchesThrow) {
       orient_swatch(m, "chain.obj");
       ADD_FAILURE() << what << ": no error";
     } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), ExitCode::invalid_mesh) << what;
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_mesh) << what;
       EXPECT_EQ(std::string(e.what()).rfind("chain.obj: degenerate swatch: ", 0), 0u) << e.what();
     }
   };

@@ -10,7 +10,7 @@
 #include <random>
 #include <set>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/topology.h"
 
 namespace meshquilt {

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "error.h"
+#include "core/error.h"
 #include "numerics/sparse_solve.h"
 
 namespace meshquilt {

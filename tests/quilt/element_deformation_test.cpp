@@ -13,7 +13,7 @@
 #include <Eigen/Dense>
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "support/bumpy_sphere.h"
 

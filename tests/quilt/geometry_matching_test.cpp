@@ -14,7 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
 #include "mesh/measures.h"
 #include "quilt/geometry_matching.h"
 #include "spatial/closest_point.h"

@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
@@ -50,7 +50,7 @@ TEST(HoleTracker, AttemptsBelowOneAreRefused) {
     HoleTracker tracker(seeds, 0);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.code(), ExitCode::invalid_option);
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_option);
   }
 }
 

@@ -11,7 +11,7 @@
 #include <glm/common.hpp>
 
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
 #include "inspect/coverage.h"
 #include "inspect/inspect_report.h"
 #include "mesh/topology.h"

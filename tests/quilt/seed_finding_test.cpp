@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {

@@ -12,7 +12,7 @@
 #include <set>
 #include <string>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/mesh_io.h"
 #include "render/camera_framing.h"
 #include "render/element_palette.h"
@@ -311,8 +311,8 @@ TEST(RenderOptionsCheck, RefusesAbsurdSizesAndEmptyMeshes) {
     render_mesh(rectangle(1, 1), options);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.code(), ExitCode::invalid_option);
-    EXPECT_NE(std::string(e.what()).find("--size"), std::string::npos);
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_option);
+    EXPECT_NE(e.text().find("{size}"), std::string::npos);
   }
   options.width = 8192;
   options.height = 0;
@@ -323,7 +323,7 @@ TEST(RenderOptionsCheck, RefusesAbsurdSizesAndEmptyMeshes) {
     render_mesh(TriMesh{}, RenderOptions{});
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.code(), ExitCode::invalid_mesh);
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_mesh);
   }
 }
 

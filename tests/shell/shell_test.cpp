@@ -9,7 +9,7 @@
 #include <set>
 
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "error.h"
+#include "core/error.h"
 #include "support/surface_fixtures.h"
 
 namespace meshquilt {
@@ -324,7 +324,7 @@ class FieldFile : public ::testing::Test {
       read_field_file(file, mesh_);
       ADD_FAILURE() << "no InputError for " << text;
     } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), ExitCode::invalid_option) << text;
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_option) << text;
       const std::string message = e.what();
       EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
       EXPECT_NE(message.find(mention), std::string::npos) << message;
@@ -388,7 +388,7 @@ TEST_F(FieldFile, ParsesTextUnderTheGivenName) {
       parse_field(bad, "inline field", mesh_);
       ADD_FAILURE() << "no InputError for " << bad;
     } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), ExitCode::invalid_option);
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_option);
       EXPECT_EQ(std::string(e.what()).rfind("inline field: ", 0), 0u) << e.what();
     }
   }
@@ -423,7 +423,7 @@ TEST_F(FieldFile, MissingFileIsUnreadable) {
     read_field_file(file, mesh_);
     FAIL() << "no IoError";
   } catch (const IoError& e) {
-    EXPECT_EQ(e.code(), ExitCode::file_unreadable);
+    EXPECT_EQ(e.kind(), ErrorKind::file_unreadable);
     EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
   }
 }

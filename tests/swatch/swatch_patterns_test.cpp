@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "error.h"
+#include <optional>
+
+#include "core/error.h"
 #include "swatch/netpbm.h"
 #include "swatch/weave_pattern.h"
 
@@ -74,22 +76,22 @@ TEST_F(NetpbmFiles, ColourImagesBecomeLuma) {
 }
 
 TEST_F(NetpbmFiles, BadImagesAreIoErrors) {
-  auto code = [](const fs::path& file) {
+  auto code = [](const fs::path& file) -> std::optional<ErrorKind> {
     try {
       read_netpbm(file);
     } catch (const IoError& e) {
       EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << "message names the file";
-      return e.code();
+      return e.kind();
     }
-    return ExitCode::ok;
+    return std::nullopt;
   };
-  EXPECT_EQ(code(dir_ / "missing.pgm"), ExitCode::file_unreadable);
-  EXPECT_EQ(code(write("png.pgm", "\x89PNG\r\n")), ExitCode::unknown_format);
-  EXPECT_EQ(code(write("short.pgm", "P5\n4 4\n255\nabc")), ExitCode::file_unreadable);
-  EXPECT_EQ(code(write("header.pgm", "P2\n4\n")), ExitCode::file_unreadable);
-  EXPECT_EQ(code(write("range.pgm", "P2 1 1 15 16\n")), ExitCode::file_unreadable);
-  EXPECT_EQ(code(write("zero.pgm", "P2 0 1 15\n")), ExitCode::file_unreadable);
-  EXPECT_EQ(code(write("bits.pbm", "P1 2 1 0 2\n")), ExitCode::file_unreadable);
+  EXPECT_EQ(code(dir_ / "missing.pgm"), ErrorKind::file_unreadable);
+  EXPECT_EQ(code(write("png.pgm", "\x89PNG\r\n")), ErrorKind::unknown_format);
+  EXPECT_EQ(code(write("short.pgm", "P5\n4 4\n255\nabc")), ErrorKind::file_unreadable);
+  EXPECT_EQ(code(write("header.pgm", "P2\n4\n")), ErrorKind::file_unreadable);
+  EXPECT_EQ(code(write("range.pgm", "P2 1 1 15 16\n")), ErrorKind::file_unreadable);
+  EXPECT_EQ(code(write("zero.pgm", "P2 0 1 15\n")), ErrorKind::file_unreadable);
+  EXPECT_EQ(code(write("bits.pbm", "P1 2 1 0 2\n")), ErrorKind::file_unreadable);
 }
 
 int mod(int a, int n) { return ((a % n) + n) % n; }
@@ -143,15 +145,15 @@ TEST(WeavePattern, InvalidPatternsAreOptionErrors) {
       parse_weave_pattern(spec);
       ADD_FAILURE() << spec << " accepted";
     } catch (const InputError& e) {
-      EXPECT_EQ(e.code(), ExitCode::invalid_option) << spec;
-      EXPECT_NE(std::string(e.what()).find("--pattern"), std::string::npos) << e.what();
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_option) << spec;
+      EXPECT_NE(e.text().find("{pattern}"), std::string::npos) << e.what();
     }
   }
   try {
     parse_weave_pattern("/nonexistent/design.pbm");
     ADD_FAILURE() << "missing image accepted";
   } catch (const IoError& e) {
-    EXPECT_EQ(e.code(), ExitCode::file_unreadable);
+    EXPECT_EQ(e.kind(), ErrorKind::file_unreadable);
   }
 }
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt::io {
@@ -20,7 +20,7 @@ namespace meshquilt::io {
 // Reading
 
 [[noreturn]] inline void parse_fail(const std::string& name, const std::string& problem) {
-  throw InputError(name + ": " + problem, ExitCode::invalid_mesh);
+  throw InputError(name + ": " + problem, ErrorKind::invalid_mesh);
 }
 
 // 1-based line number of `at` inside `text`; only computed on the error path.

@@ -240,7 +240,7 @@ void check_ply_counts(const Reader& reader, const PlyHeader& header, const std::
       if (element.count > std::numeric_limits<int32_t>::max()) {
         throw InputError(name + ": PLY header declares " + std::to_string(element.count) +
                              " vertices, more than 32-bit vertex indices can address",
-                         ExitCode::too_large);
+                         ErrorKind::too_large);
       }
       mesh_bytes += 24.0 * static_cast<double>(element.count);
     } else if (element.name == "face") {

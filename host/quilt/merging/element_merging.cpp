@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
+#include "core/error.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "quilt/merging/graph_cut.h"

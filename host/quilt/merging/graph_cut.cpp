@@ -10,7 +10,7 @@
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #pragma GCC diagnostic pop
 
-#include "error.h"
+#include "core/error.h"
 
 namespace meshquilt {
 namespace {
@@ -31,7 +31,7 @@ void check_capacity(double c, const char* what, size_t index) {
   if (std::isnan(c) || c < 0.0)
     throw InputError("minimum_cut: " + std::string(what) + " " + std::to_string(index) +
                          " has a negative or NaN capacity",
-                     ExitCode::invalid_option);
+                     ErrorKind::invalid_option);
 }
 
 }  // namespace
@@ -40,7 +40,7 @@ CutResult minimum_cut(const CutGraph& graph) {
   const int32_t n = graph.num_nodes;
   if (n < 0 || graph.weights.size() != graph.edges.size() ||
       graph.source_caps.size() != static_cast<size_t>(n) || graph.sink_caps.size() != static_cast<size_t>(n))
-    throw InputError("minimum_cut: array sizes do not match num_nodes/edges", ExitCode::invalid_option);
+    throw InputError("minimum_cut: array sizes do not match num_nodes/edges", ErrorKind::invalid_option);
 
   // Every finite cut costs at most the sum of all finite capacities, so anything above it acts
   // as infinity without overflowing the solver's arithmetic.
@@ -50,7 +50,7 @@ CutResult minimum_cut(const CutGraph& graph) {
     const auto [u, v] = graph.edges[e];
     if (u < 0 || v < 0 || u >= n || v >= n || u == v)
       throw InputError("minimum_cut: edge " + std::to_string(e) + " has an invalid end node",
-                       ExitCode::invalid_option);
+                       ErrorKind::invalid_option);
     if (std::isfinite(graph.weights[e])) finite_sum += graph.weights[e];
   }
   for (int32_t i = 0; i < n; ++i) {
@@ -58,7 +58,7 @@ CutResult minimum_cut(const CutGraph& graph) {
     check_capacity(graph.sink_caps[i], "sink link of node", i);
     if (std::isinf(graph.source_caps[i]) && std::isinf(graph.sink_caps[i]))
       throw InputError("minimum_cut: node " + std::to_string(i) + " is linked to both terminals with infinite capacity",
-                       ExitCode::invalid_option);
+                       ErrorKind::invalid_option);
     if (std::isfinite(graph.source_caps[i])) finite_sum += graph.source_caps[i];
     if (std::isfinite(graph.sink_caps[i])) finite_sum += graph.sink_caps[i];
   }

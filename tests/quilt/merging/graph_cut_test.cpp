@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "error.h"
+#include "core/error.h"
 #include "quilt/merging/graph_cut.h"
 
 namespace meshquilt {
