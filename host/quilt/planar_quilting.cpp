@@ -7,9 +7,7 @@
 #include "core/error.h"
 #include "mesh/topology.h"
 #include "quilt/merging/abutting_elements.h"
-#include "quilt/broken_elements.h"
-#include "quilt/hole_tracker.h"
-#include "quilt/seed_finding.h"
+#include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
 
 namespace meshquilt {
@@ -34,37 +32,25 @@ std::vector<glm::dvec2> covering_translations(int px, int py, int sub_nx, int su
 
 TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const PlanarQuiltOptions& options,
                     QuiltStats* stats_out) {
-  if (!(options.width > 0.0) || !(options.height > 0.0))
-    throw InputError("plane size must be positive", ErrorKind::invalid_option);
+  if (!(options.width > 0.0) || !(options.height > 0.0)) throw OptionError("plane size must be positive");
   QuiltStats stats;
   auto& seconds = stats.stage_seconds;
-
-  const QuiltSwatch swatch = timed(seconds, "swatch", [&] { return prepare_swatch(input_swatch); });
-  const glm::dvec2 extent = swatch.extent;
-  const double cell = std::min(extent.x, extent.y) / std::max(4, options.cells_across_swatch);
-  const Rect2 domain{glm::dvec2(0.0), glm::dvec2(options.width * extent.x, options.height * extent.y)};
+  const QuiltSetup setup(input_swatch, device, options, stats);
+  const QuiltSwatch& swatch = setup.swatch;
+  const double cell = setup.cell;
+  const Rect2 domain{glm::dvec2(0.0), glm::dvec2(options.width * swatch.extent.x, options.height * swatch.extent.y)};
   PlaneGrid grid;
   grid.cell = cell;
   // The cells whose centre lies in the plane: a last, partial row or column with its centre
   // outside could never be covered and would count as a hole.
   grid.nx = std::max(1, static_cast<int>(std::ceil(domain.hi.x / cell - 0.5 - 1e-9)));
   grid.ny = std::max(1, static_cast<int>(std::ceil(domain.hi.y / cell - 0.5 - 1e-9)));
-  const int swatch_nx = std::max(1, static_cast<int>(std::floor(extent.x / cell + 1e-9)));
-  const int swatch_ny = std::max(1, static_cast<int>(std::floor(extent.y / cell + 1e-9)));
-  const int sub_nx = sub_patch_cells(swatch_nx, grid.nx, options.sub_patch_fraction);
-  const int sub_ny = sub_patch_cells(swatch_ny, grid.ny, options.sub_patch_fraction);
+  const int sub_nx = sub_patch_cells(setup.swatch_nx, grid.nx, options.sub_patch_fraction);
+  const int sub_ny = sub_patch_cells(setup.swatch_ny, grid.ny, options.sub_patch_fraction);
   const int total_cells = grid.nx * grid.ny;
   stats.cells = total_cells;
   stats.cell_size = cell;
   stats.plane_extent = domain.hi;
-
-  MatchingOptions matching = options.matching;
-  matching.lambda = options.lambda / swatch.mean_edge;
-  PatchStepOptions step = options.step;
-  step.correspondence.lambda = options.lambda / swatch.mean_edge;
-  // The matcher's nearest-face grid, BVH and device buffers.
-  const GeometryMatcher matcher = timed(seconds, "index", [&] { return GeometryMatcher(device, swatch.mesh, cell, matching); });
-  stats.grid_source = matcher.grid_source();
 
   SeedFinder seeds(grid.nx, grid.ny);
   HoleTracker holes(seeds, options.seed_attempts);
@@ -82,66 +68,41 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   const double reach = element_sides.empty() ? 0.0 : 0.25 * element_sides[element_sides.size() / 2];
   const Rect2 retry_domain{domain.lo - glm::dvec2(reach), domain.hi + glm::dvec2(reach)};
 
-  while (true) {
-    if (options.cancel) options.cancel->check();
-    std::optional<int> seed_cell;
-    {
-      StageTimer timer(seconds, "seed");
-      seed_cell = seeds.next_seed();
-    }
-    if (!seed_cell || (options.max_patches > 0 && stats.patches >= options.max_patches)) break;
-    const int seed_x = *seed_cell % grid.nx, seed_y = *seed_cell / grid.nx;
-
+  SeedLoopDomain plane;
+  plane.quilt_patch_at = [&](int seed_cell) {
+    const int seed_x = seed_cell % grid.nx, seed_y = seed_cell / grid.nx;
     // Output-sub-patch: sub_nx x sub_ny cells around the seed, inside the domain.
     const int px = std::clamp(seed_x - sub_nx / 2, 0, grid.nx - sub_nx);
     const int py = std::clamp(seed_y - sub_ny / 2, 0, grid.ny - sub_ny);
     request.sub_patch = {glm::dvec2(px * cell, py * cell), glm::dvec2((px + sub_nx) * cell, (py + sub_ny) * cell)};
-    request.candidates = covering_translations(px, py, sub_nx, sub_ny, swatch_nx, swatch_ny, cell);
-    const Rect2& placing = holes.tries(*seed_cell) > 0 ? retry_domain : domain;
+    request.candidates = covering_translations(px, py, sub_nx, sub_ny, setup.swatch_nx, setup.swatch_ny, cell);
+    const Rect2& placing = holes.tries(seed_cell) > 0 ? retry_domain : domain;
     request.inside_domain = [&placing](const glm::dvec2& p) { return placing.contains(p); };
-
     const PatchOutcome outcome =
-        quilt_patch(layer, request, swatch, matcher, step, rng, stats.merges, seconds, options.cancel);
-    {
-      StageTimer timer(seconds, "seed");
-      for (int c = 0; c < total_cells; ++c)
-        if (outcome.covered[c]) seeds.mark_processed(c);
-      holes.attempted(*seed_cell);
-    }
-    ++stats.patches;
-    if (options.progress) {
-      const int processed = total_cells - seeds.unprocessed_count();
-      options.progress({processed * cell * cell, total_cells * cell * cell, processed, total_cells, stats.patches});
-    }
-  }
+        quilt_patch(layer, request, swatch, setup.matcher, setup.step, rng, stats.merges, seconds, options.cancel);
+    StageTimer timer(seconds, "seed");
+    for (int c = 0; c < total_cells; ++c)
+      if (outcome.covered[c]) seeds.mark_processed(c);
+  };
+  plane.progress = [&] {
+    const int processed = total_cells - seeds.unprocessed_count();
+    return QuiltProgress{processed * cell * cell, total_cells * cell * cell, processed, total_cells, 0};
+  };
+  run_seed_loop(seeds, holes, options, stats, plane);
 
-  std::vector<const TriMesh*> meshes;
-  std::vector<uint8_t> alive;
-  for (const PlaneElement& e : layer) {
-    meshes.push_back(&e.mesh);
-    alive.push_back(e.alive ? 1 : 0);
-  }
-  if (options.cleanup) {
-    StageTimer timer(seconds, "cleanup");
-    const BrokenElements removed = remove_broken_elements(meshes, swatch.closed_elements, alive);
-    stats.dropped_open = removed.open;
-    stats.dropped_intersecting = removed.intersecting;
-  }
-  stats.dropped_elements = stats.dropped_open + stats.dropped_intersecting;
   const HoleSummary hole_summary = holes.summary(grid_neighbours(grid.nx, grid.ny));
   stats.holes = hole_summary.holes;
   stats.hole_cells = hole_summary.cells;
   stats.largest_hole_area = hole_summary.largest_cells * cell * cell;
-  std::vector<TriMesh> kept;
-  std::vector<int32_t> kept_sources;
-  for (size_t i = 0; i < layer.size(); ++i)
-    if (alive[i]) {
-      kept.push_back(std::move(layer[i].mesh));
-      kept_sources.push_back(layer[i].source);
-    }
-  TriMesh result = join_elements(kept);
-  result.sources.resize(result.num_faces());
-  for (size_t f = 0; f < result.num_faces(); ++f) result.sources[f] = kept_sources[result.elements[f]];
+  std::vector<TriMesh> elements;
+  std::vector<uint8_t> alive;
+  std::vector<int32_t> sources;
+  for (PlaneElement& e : layer) {
+    elements.push_back(std::move(e.mesh));
+    alive.push_back(e.alive ? 1 : 0);
+    sources.push_back(e.source);
+  }
+  TriMesh result = finish_quilt(elements, alive, sources, setup, options, stats);
   if (options.cleanup) {
     StageTimer timer(seconds, "cleanup");
     stats.joined_elements = join_abutting_elements(result, kWeldTolerance);
