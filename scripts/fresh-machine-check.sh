@@ -15,7 +15,7 @@ root=${1:-/var/tmp/meshquilt-fresh}
 mapfile -t commands < <(awk '/^```/ { if (inside) exit; inside = 1; next } inside && NF' README.md)
 [ "${#commands[@]}" = 2 ] || { echo "fresh-machine-check: README.md: expected two commands in its first block" >&2; exit 2; }
 
-command -v debootstrap >/dev/null || { apt-get update -qq && apt-get install -y -qq debootstrap; }
+command -v debootstrap >/dev/null || { apt-get update -qq && apt-get install -y -qq debootstrap >/dev/null; }
 
 unmount_all() {
   for m in dev sys proc; do

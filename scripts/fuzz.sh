@@ -14,9 +14,17 @@ targets=("$@")
 jobs=${FUZZ_BUILD_JOBS:-2}
 
 command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 1; }
-CXX=clang++-14 cmake -S tests/fuzz -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+# The whole project with clang and the sanitizers, the fuzz targets built over its own library
+# targets (no Vulkan: the readers never reach the device).
+sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DMESHQUILT_FUZZ=ON -DMESHQUILT_TESTS=OFF -DMESHQUILT_PERF=OFF -DMESHQUILT_VULKAN=OFF \
+  -DCMAKE_CXX_FLAGS="$sanitize -fsanitize=fuzzer-no-link" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 # The build's own messages only on failure (a link error must be visible in CI's log).
-if ! cmake --build build-fuzz -j"$jobs" >build-fuzz/build.log 2>&1; then
+fuzzers=()
+for t in obj ply off stl swatch netpbm field texture; do fuzzers+=("${t}_fuzzer"); done
+if ! cmake --build build-fuzz -j"$jobs" --target "${fuzzers[@]}" >build-fuzz/build.log 2>&1; then
   tail -40 build-fuzz/build.log >&2
   echo "fuzz.sh: building the fuzz targets failed (log: build-fuzz/build.log)" >&2
   exit 1
