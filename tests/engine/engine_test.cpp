@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "probe.h"
 #include "probe_layout.h"
+#include "support/backends.h"
 
 namespace meshquilt {
 namespace {
@@ -23,30 +24,13 @@ namespace {
 using engine::Backend;
 using engine::BackendChoice;
 
-bool ci() {
-  const char* value = std::getenv("CI");
-  return value && std::string(value) == "true";
-}
-
-// The device a parameterized test runs on, or nullptr with the reason in *why.
-std::unique_ptr<engine::Device> open_backend(Backend backend, std::string* why) {
-  try {
-    return engine::open_device(backend == Backend::cpu ? BackendChoice::cpu : BackendChoice::vulkan);
-  } catch (const DeviceError& error) {
-    *why = error.what();
-    return nullptr;
-  }
-}
-
-class EngineTest : public ::testing::TestWithParam<Backend> {
+class EngineTest : public test::BackendTest {
  protected:
+  // A fresh device per test: some tests read its counters from zero.
   void SetUp() override {
     std::string why;
-    device_ = open_backend(GetParam(), &why);
-    if (!device_) {
-      if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
-      GTEST_SKIP() << "no Vulkan device: " << why;
-    }
+    device_ = test::open_backend(GetParam(), &why);
+    MESHQUILT_REQUIRE_DEVICE(device_, why);
   }
 
   std::vector<std::uint32_t> run_probe(std::uint32_t invocations, std::uint32_t input_count, std::uint32_t multiplier,
@@ -96,7 +80,7 @@ TEST(Engine, CpuAlwaysOpens) {
 
 TEST(Engine, AutomaticPrefersAGpuAndOtherwiseSaysWhy) {
   std::string why;
-  const auto vulkan = open_backend(Backend::vulkan, &why);
+  const auto vulkan = test::open_backend(Backend::vulkan, &why);
   const bool has_gpu = vulkan != nullptr && !vulkan->software_rasterizer();
   std::string note;
   auto device = engine::open_device(BackendChoice::automatic, &note);
@@ -230,8 +214,7 @@ TEST_P(EngineTest, ZeroInvocationsDoNothingAndStatsCount) {
   EXPECT_EQ(device_->stats().invocations, 100u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, EngineTest, ::testing::Values(Backend::cpu, Backend::vulkan),
-                         [](const auto& info) { return std::string(engine::backend_name(info.param)); });
+MESHQUILT_ON_BACKENDS(EngineTest);
 
 }  // namespace
 }  // namespace meshquilt

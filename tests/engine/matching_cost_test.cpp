@@ -24,6 +24,7 @@
 #include "mesh/tri_mesh.h"
 #include "spatial/near_face_grid.h"
 #include "spatial/normal_bins.h"
+#include "support/backends.h"
 
 namespace meshquilt {
 namespace {
@@ -33,20 +34,6 @@ using glm::dvec3;
 
 // Per pair: float32 against double, relative (D >= 1 always).
 constexpr double kTolerance = 1e-5;
-
-bool ci() {
-  const char* value = std::getenv("CI");
-  return value && std::string(value) == "true";
-}
-
-std::unique_ptr<engine::Device> open_backend(Backend backend, std::string* why) {
-  try {
-    return engine::open_device(backend == Backend::cpu ? engine::BackendChoice::cpu : engine::BackendChoice::vulkan);
-  } catch (const DeviceError& error) {
-    *why = error.what();
-    return nullptr;
-  }
-}
 
 // ---- the reference: brute force over all faces, in double --------------------------------
 
@@ -262,22 +249,8 @@ double check_bound(const std::vector<float>& bounds, const std::vector<double>& 
 
 // ---- the tests, one body per back end ---------------------------------------------------
 
-class MatchingCostTest : public ::testing::TestWithParam<Backend> {
+class MatchingCostTest : public test::BackendTest {
  protected:
-  // One device per back end for the whole suite: lavapipe compiles a pipeline on its first
-  // dispatch, which would otherwise dominate every test.
-  static void TearDownTestSuite() { devices().clear(); }
-
-  void SetUp() override {
-    auto& device = devices()[GetParam()];
-    std::string why;
-    if (!device) device = open_backend(GetParam(), &why);
-    device_ = device.get();
-    if (!device_) {
-      if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
-      GTEST_SKIP() << "no Vulkan device: " << why;
-    }
-  }
 
   // Checks bounds and scores against the reference, with every voxel's faces in one list and
   // with them grouped by normal (which must give the same bounds: a group is passed over only
@@ -286,9 +259,9 @@ class MatchingCostTest : public ::testing::TestWithParam<Backend> {
     MatchingSwatch grouped_swatch = plain;
     const Grouped grouped = group_by_normal(grouped_swatch, query.normals, 4);
     const std::vector<float> ungrouped =
-        MatchingCost(*device_, plain, grid_for(plain, voxel)).point_costs(query.points, query.normals, query.translations);
+        MatchingCost(device(), plain, grid_for(plain, voxel)).point_costs(query.points, query.normals, query.translations);
     const MatchingSwatch& swatch = grouped_swatch;
-    MatchingCost cost(*device_, swatch, grid_for(swatch, voxel, grouped.bins.bin_of));
+    MatchingCost cost(device(), swatch, grid_for(swatch, voxel, grouped.bins.bin_of));
     const std::vector<float> bounds = cost.point_costs(query.points, query.normals, query.translations, grouped.factors);
     EXPECT_EQ(bounds.size(), ungrouped.size()) << what;
     for (std::size_t k = 0; k < std::min(bounds.size(), ungrouped.size()); ++k)
@@ -326,13 +299,6 @@ class MatchingCostTest : public ::testing::TestWithParam<Backend> {
     }
     return exact_share;
   }
-
-  static std::map<Backend, std::unique_ptr<engine::Device>>& devices() {
-    static std::map<Backend, std::unique_ptr<engine::Device>> opened;
-    return opened;
-  }
-
-  engine::Device* device_ = nullptr;
 };
 
 // One triangle, every query inside the grid and the face always listed: the bound is Eq. 2.
@@ -345,7 +311,7 @@ TEST_P(MatchingCostTest, ClosedFormSingleTriangle) {
   TriMesh mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   mesh.triangles = {{0, 1, 2}};
-  MatchingCost cost(*device_, swatch, build_near_face_grid(mesh, 0.25, 3.0, 10.0, 10.0));
+  MatchingCost cost(device(), swatch, build_near_face_grid(mesh, 0.25, 3.0, 10.0, 10.0));
   const std::vector<glm::vec3> points = {{0.25f, 0.25f, 0.5f}, {0.25f, 0.25f, 0.5f}, {2.0f, 2.0f, 0.0f},
                                          {1.25f, 1.25f, 0.5f}};
   const std::vector<glm::vec3> normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}, {1, 0, 0}};
@@ -369,7 +335,7 @@ TEST_P(MatchingCostTest, OutsideTheGridTheBoxBounds) {
   std::mt19937 rng(4);
   MatchingSwatch swatch = random_swatch(rng, 50);
   set_normals(swatch);
-  MatchingCost cost(*device_, swatch, grid_for(swatch, 0.2));
+  MatchingCost cost(device(), swatch, grid_for(swatch, 0.2));
   // Every face lies in [0, 4.3] x [0, 3.3] x [-0.3, 0.7]; (10, 1, 0.2) is at least 5.7 away.
   const std::vector<float> bound = cost.point_costs({{10.0f, 1.0f, 0.2f}}, {{0, 0, 1}}, {{0, 0}});
   ASSERT_EQ(bound.size(), 1u);
@@ -435,7 +401,7 @@ TEST_P(MatchingCostTest, EmptyInputs) {
   std::mt19937 rng(3);
   MatchingSwatch swatch = random_swatch(rng, 20);
   set_normals(swatch);
-  MatchingCost cost(*device_, swatch, grid_for(swatch, 0.25));
+  MatchingCost cost(device(), swatch, grid_for(swatch, 0.25));
   const std::vector<glm::vec3> none;
   const std::vector<glm::vec2> shifts = {{0, 0}, {1, 0}, {0, 1}};
   EXPECT_EQ(cost.score(none, none, shifts), std::vector<double>(3, 0.0));
@@ -452,26 +418,26 @@ TEST_P(MatchingCostTest, RejectsBadInput) {
   set_normals(swatch);
   const NearFaceGrid grid = grid_for(swatch, 0.25);
   swatch.triangles.clear();
-  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);  // no faces
+  EXPECT_THROW(MatchingCost(device(), swatch, grid), InputError);  // no faces
   swatch.triangles = {{0, 1, 3}};
-  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);  // index out of range
+  EXPECT_THROW(MatchingCost(device(), swatch, grid), InputError);  // index out of range
   swatch.triangles = {{0, 1, 2}};
   swatch.normals.clear();
-  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);  // normals do not match faces
+  EXPECT_THROW(MatchingCost(device(), swatch, grid), InputError);  // normals do not match faces
   set_normals(swatch);
   swatch.lambda = -1.0f;
-  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);
+  EXPECT_THROW(MatchingCost(device(), swatch, grid), InputError);
   swatch.lambda = 1.0f;
   swatch.positions[1].x = NAN;
-  EXPECT_THROW(MatchingCost(*device_, swatch, grid), InputError);
+  EXPECT_THROW(MatchingCost(device(), swatch, grid), InputError);
   swatch.positions[1].x = 1.0f;
   NearFaceGrid broken = grid;
   broken.faces.push_back(7);
-  EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);  // lists a face the swatch lacks
+  EXPECT_THROW(MatchingCost(device(), swatch, broken), InputError);  // lists a face the swatch lacks
   broken = grid;
   broken.start.pop_back();
-  EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);
-  MatchingCost cost(*device_, swatch, grid);
+  EXPECT_THROW(MatchingCost(device(), swatch, broken), InputError);
+  MatchingCost cost(device(), swatch, grid);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, NAN, 0}}, {{0, 0, 1}}, {{0, 0}}), InputError);
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, INFINITY}}, {{0, 0}}), InputError);
@@ -480,7 +446,7 @@ TEST_P(MatchingCostTest, RejectsBadInput) {
   EXPECT_THROW(cost.score({{0, 0, 0}}, {{0, 0, 1}}, {{0, 0}}, {NAN}), InputError);
   broken = grid;
   broken.groups[0].label = 1;  // the swatch has one bin
-  EXPECT_THROW(MatchingCost(*device_, swatch, broken), InputError);
+  EXPECT_THROW(MatchingCost(device(), swatch, broken), InputError);
   EXPECT_NEAR(cost.score({{0.2f, 0.2f, 1.0f}}, {{0, 0, 1}}, {{0, 0}})[0], 2.0, 1e-4);
 }
 
@@ -490,14 +456,14 @@ TEST_P(MatchingCostTest, BatchingDoesNotChangeResults) {
   set_normals(swatch);
   const NearFaceGrid grid = grid_for(swatch, 0.1);
   const Query query = random_query(rng, 100, 8);  // 10 candidates, 1000 pairs
-  MatchingCost whole(*device_, swatch, grid);
+  MatchingCost whole(device(), swatch, grid);
   const std::vector<float> reference = whole.point_costs(query.points, query.normals, query.translations);
   EXPECT_EQ(whole.last_dispatch_count(), 1u);
   for (const auto& [max_pairs, dispatches] : std::vector<std::pair<std::size_t, std::size_t>>{
            {250, 5},   // 2 candidates x 100 points per dispatch
            {37, 30}})  // 37 points, 1 candidate: 3 chunks x 10
   {
-    MatchingCost batched(*device_, swatch, grid, {max_pairs});
+    MatchingCost batched(device(), swatch, grid, {max_pairs});
     EXPECT_EQ(batched.point_costs(query.points, query.normals, query.translations), reference) << max_pairs;
     EXPECT_EQ(batched.last_dispatch_count(), dispatches) << max_pairs;
     EXPECT_EQ(batched.score(query.points, query.normals, query.translations),
@@ -505,17 +471,13 @@ TEST_P(MatchingCostTest, BatchingDoesNotChangeResults) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, MatchingCostTest, ::testing::Values(Backend::cpu, Backend::vulkan),
-                         [](const auto& info) { return std::string(engine::backend_name(info.param)); });
+MESHQUILT_ON_BACKENDS(MatchingCostTest);
 
 // Vulkan against its C++ twin, pair by pair.
 TEST(MatchingCostParity, VulkanAgreesWithCpuTwin) {
   std::string why;
-  auto vulkan = open_backend(Backend::vulkan, &why);
-  if (!vulkan) {
-    if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
-    GTEST_SKIP() << "no Vulkan device: " << why;
-  }
+  auto vulkan = test::open_backend(Backend::vulkan, &why);
+  MESHQUILT_REQUIRE_DEVICE(vulkan, why);
   auto cpu = engine::open_device(engine::BackendChoice::cpu);
   std::mt19937 rng(77);
   MatchingSwatch swatch = random_swatch(rng, 400);

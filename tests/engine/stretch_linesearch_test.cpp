@@ -23,6 +23,7 @@
 #include "device.h"
 #include "core/error.h"
 #include "stretch_linesearch.h"
+#include "support/backends.h"
 
 namespace {
 
@@ -38,10 +39,6 @@ using Search = meshquilt::StretchLineSearch;
 using Colours = std::vector<std::vector<uint32_t>>;
 using Matrix = std::array<std::array<double, 3>, 3>;  // [row][column]
 
-bool ci() {
-  const char* value = std::getenv("CI");
-  return value && std::string(value) == "true";
-}
 
 // ---- shell maps over planar base meshes ---------------------------------------------------
 
@@ -338,45 +335,9 @@ Interval feasible_interval(const StretchProblem& problem, const TopUv& top_uv, u
 // ---- the tests --------------------------------------------------------------------------
 
 // One fixture for every test, so all are named StretchLineSearch.*: value-parameterized tests
-// run one body per back end (StretchLineSearch.X/cpu, .../vulkan); the plain ones open what they
-// need through device().
-class StretchLineSearch : public ::testing::TestWithParam<Backend> {
- protected:
-  // One device per back end for the whole suite: lavapipe compiles a pipeline on its first
-  // dispatch.
-  static void TearDownTestSuite() { devices().clear(); }
-
-  static meshquilt::engine::Device* device(Backend backend, std::string* why) {
-    auto& device = devices()[backend];
-    if (!device) {
-      try {
-        device = meshquilt::engine::open_device(backend == Backend::cpu
-                                                    ? meshquilt::engine::BackendChoice::cpu
-                                                    : meshquilt::engine::BackendChoice::vulkan);
-      } catch (const meshquilt::DeviceError& error) {
-        *why = error.what();
-      }
-    }
-    return device.get();
-  }
-
-  void SetUp() override {
-    if (!::testing::UnitTest::GetInstance()->current_test_info()->value_param()) return;
-    std::string why;
-    device_ = device(GetParam(), &why);
-    if (!device_) {
-      if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
-      GTEST_SKIP() << "no Vulkan device: " << why;
-    }
-  }
-
-  static std::map<Backend, std::unique_ptr<meshquilt::engine::Device>>& devices() {
-    static std::map<Backend, std::unique_ptr<meshquilt::engine::Device>> opened;
-    return opened;
-  }
-
-  meshquilt::engine::Device* device_ = nullptr;
-};
+// run one body per back end (Backends/StretchLineSearch.X/cpu, .../vulkan); the plain ones open
+// what they need through shared_device().
+class StretchLineSearch : public meshquilt::test::BackendTest {};
 
 TEST_P(StretchLineSearch, EnergyDecreasesWithoutInverting) {
   const ShellMap map = bumpy_grid();
@@ -384,7 +345,7 @@ TEST_P(StretchLineSearch, EnergyDecreasesWithoutInverting) {
   ASSERT_GE(colours.size(), 2u);
   const double before = total_energy(map.problem, map.top_uv);
   for (double det : texture_dets(map.problem, map.top_uv)) ASSERT_GT(det, 0.0);
-  Search search(*device_, map.problem);
+  Search search(device(), map.problem);
 
   std::vector<glm::vec2> short_run = map.top_uv;
   search.run(short_run, colours, {.sweeps = 3});
@@ -412,7 +373,7 @@ TEST_P(StretchLineSearch, MovesKeepTheVolumeRatio) {
   for (uint32_t a : interior(map)) map.top_uv[a] += glm::vec2(jitter(rng), jitter(rng));
   const Colours colours = {greedy_colours(map.problem, interior(map)).front()};
   const std::vector<double> start = texture_dets(map.problem, map.top_uv);
-  Search search(*device_, map.problem);
+  Search search(device(), map.problem);
   auto smallest_ratio = [&](float ratio) {
     std::vector<glm::vec2> top_uv = map.top_uv;
     search.run(top_uv, colours, {.sweeps = 1, .min_volume_ratio = ratio});
@@ -434,7 +395,7 @@ TEST_P(StretchLineSearch, HexagonalFanReturnsToItsOptimum) {
     const double least = total_energy(map.problem, map.top_uv);
     map.top_uv[0] += glm::vec2(0.22f, -0.17f);
     ASSERT_GT(total_energy(map.problem, map.top_uv), least * (1.0 + 1e-3));
-    Search search(*device_, map.problem);
+    Search search(device(), map.problem);
     search.run(map.top_uv, {{0}}, {.sweeps = 60});
     // Float32 line minima resolve about sqrt(float epsilon) of the unit ring.
     EXPECT_NEAR(map.top_uv[0].x, optimum.x, 5e-4) << optimum.x;
@@ -465,7 +426,7 @@ TEST_P(StretchLineSearch, BlindStepsTryTheMiddleOfTheFeasibleInterval) {
     top_uv[c.vertex] = c.start;
     const TopUv start = widen(top_uv);
     const double before = total_energy(c.map.problem, start);
-    Search search(*device_, c.map.problem);
+    Search search(device(), c.map.problem);
     for (float ratio : {0.0f, 0.25f, 0.8f})
       for (uint64_t seed = 1; seed <= 12; ++seed) {
         const dvec2 d = direction(seed, 0, c.vertex);
@@ -499,7 +460,7 @@ TEST_P(StretchLineSearch, UncolouredVerticesNeverMove) {
     if (a % 2 == 0) some.push_back(a);
   const Colours colours = greedy_colours(map.problem, some);
   std::vector<glm::vec2> top_uv = map.top_uv;
-  Search search(*device_, map.problem);
+  Search search(device(), map.problem);
   search.run(top_uv, colours, {.sweeps = 5});
   std::size_t moved = 0;
   for (uint32_t a = 0; a < top_uv.size(); ++a) {
@@ -525,7 +486,7 @@ TEST_P(StretchLineSearch, RejectsBadInput) {
   const auto rejects = [&](const std::function<void(StretchProblem&)>& edit, const char* what) {
     StretchProblem problem = map.problem;
     edit(problem);
-    EXPECT_THROW(Search(*device_, problem), InputError) << what;
+    EXPECT_THROW(Search(device(), problem), InputError) << what;
   };
   rejects([](StretchProblem& p) { p.tets[5].corners.z = static_cast<uint32_t>(2 * p.bottom_uv.size()); },
           "corner code out of range");
@@ -541,7 +502,7 @@ TEST_P(StretchLineSearch, RejectsBadInput) {
   rejects([](StretchProblem& p) { p.bottom_uv[3].x = INFINITY; }, "non-finite bottom uv");
   rejects([](StretchProblem& p) { p.texture_height = 0.0f; }, "zero height");
 
-  Search search(*device_, map.problem);
+  Search search(device(), map.problem);
   const std::vector<uint32_t> inner = interior(map);
   std::vector<glm::vec2> top_uv = map.top_uv;
   EXPECT_THROW(search.run(top_uv, {{inner[0]}, {inner[0]}}, {}), InputError);  // one vertex, two colours
@@ -553,17 +514,14 @@ TEST_P(StretchLineSearch, RejectsBadInput) {
   std::vector<glm::vec2> short_uv(top_uv.begin(), top_uv.end() - 1);
   EXPECT_THROW(search.run(short_uv, {{inner[0]}}, {}), InputError);
   // A device that cuts long loops (lavapipe) refuses searches that would run past its budget.
-  if (const uint32_t budget = device_->max_loop_iterations()) {
+  if (const uint32_t budget = device().max_loop_iterations()) {
     EXPECT_THROW(search.run(top_uv, {{inner[0]}}, {.golden_steps = budget}), InputError);
   }
   top_uv[inner[1]].y = NAN;
   EXPECT_THROW(search.run(top_uv, {{inner[0]}}, {}), InputError);
 }
 
-INSTANTIATE_TEST_SUITE_P(, StretchLineSearch, ::testing::Values(Backend::cpu, Backend::vulkan),
-                         [](const auto& info) {
-                           return std::string(meshquilt::engine::backend_name(info.param));
-                         });
+MESHQUILT_ON_BACKENDS(StretchLineSearch);
 
 // Vulkan against its C++ twin: they differ only by rounding (cos, sin, fused multiply-adds), but
 // a line minimum found in float32 is fixed only to about sqrt(float epsilon) of the local scale
@@ -572,18 +530,15 @@ INSTANTIATE_TEST_SUITE_P(, StretchLineSearch, ::testing::Values(Backend::cpu, Ba
 // the grid's size (3e-4 against 6e-4 on lavapipe).
 TEST_F(StretchLineSearch, VulkanAgreesWithCpuTwin) {
   std::string why;
-  meshquilt::engine::Device* vulkan = device(Backend::vulkan, &why);
-  if (!vulkan) {
-    if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
-    GTEST_SKIP() << "no Vulkan device: " << why;
-  }
+  meshquilt::engine::Device* vulkan = shared_device(Backend::vulkan, &why);
+  MESHQUILT_REQUIRE_DEVICE(vulkan, why);
   const double size = 6.0;
   const ShellMap map = bumpy_grid(21, size / 20);
   const Colours colours = greedy_colours(map.problem, interior(map));
   const StretchSearchOptions options{.sweeps = 20, .seed = 0x1234'5678'9abcULL};
   std::vector<glm::vec2> on_gpu = map.top_uv, on_cpu = map.top_uv;
   Search(*vulkan, map.problem).run(on_gpu, colours, options);
-  Search(*device(Backend::cpu, &why), map.problem).run(on_cpu, colours, options);
+  Search(*shared_device(Backend::cpu, &why), map.problem).run(on_cpu, colours, options);
   for (uint32_t a = 0; a < on_cpu.size(); ++a) {
     EXPECT_NEAR(on_gpu[a].x, on_cpu[a].x, 1e-4 * size) << a;
     EXPECT_NEAR(on_gpu[a].y, on_cpu[a].y, 1e-4 * size) << a;
@@ -595,7 +550,7 @@ TEST_F(StretchLineSearch, VulkanAgreesWithCpuTwin) {
 
 TEST_F(StretchLineSearch, SameSeedSameResult) {
   std::string why;
-  meshquilt::engine::Device& cpu = *device(Backend::cpu, &why);
+  meshquilt::engine::Device& cpu = *shared_device(Backend::cpu, &why);
   const ShellMap map = bumpy_grid();
   const Colours colours = greedy_colours(map.problem, interior(map));
   const auto run = [&](uint64_t seed) {

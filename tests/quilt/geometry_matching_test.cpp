@@ -19,6 +19,7 @@
 #include "quilt/geometry_matching.h"
 #include "spatial/closest_point.h"
 #include "swatch/chainmail.h"
+#include "support/backends.h"
 
 namespace meshquilt {
 namespace {
@@ -401,13 +402,9 @@ TEST(GeometryMatching, EmptySubPatchTakesASeededRandomCandidate) {
 }
 
 TEST(GeometryMatching, BothBackEndsChooseAlike) {
-  std::unique_ptr<engine::Device> vulkan;
-  try {
-    vulkan = engine::open_device(engine::BackendChoice::vulkan);
-  } catch (const DeviceError&) {
-    if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true") FAIL() << "no Vulkan device under CI";
-    GTEST_SKIP() << "no Vulkan device";
-  }
+  std::string why;
+  const std::unique_ptr<engine::Device> vulkan = test::open_backend(engine::Backend::vulkan, &why);
+  MESHQUILT_REQUIRE_DEVICE(vulkan, why);
   auto cpu = engine::open_device(engine::BackendChoice::cpu);
   std::mt19937_64 rng(21);
   const TriMesh swatch = random_swatch(rng, 60);

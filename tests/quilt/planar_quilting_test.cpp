@@ -21,6 +21,7 @@
 #include "swatch/fruit.h"
 #include "swatch/weave.h"
 #include "support/run_cli.h"
+#include "support/backends.h"
 
 namespace meshquilt {
 namespace {
@@ -236,19 +237,11 @@ TEST(PlanarQuilting, SameSeedSameOutputOtherSeedOther) {
   EXPECT_NE(a.positions, c.positions);
 }
 
-bool vulkan_available() {
-  try {
-    engine::open_device(engine::BackendChoice::vulkan);
-    return true;
-  } catch (const DeviceError&) {
-    return false;
-  }
-}
-
 TEST(PlanarQuilting, VulkanAndCpuGiveTheSameOutputFiles) {
-  if (!vulkan_available()) {
-    if (const char* ci = std::getenv("CI"); ci && std::string(ci) == "true") FAIL() << "no Vulkan device under CI";
-    GTEST_SKIP() << "no Vulkan device";
+  {
+    std::string why;
+    const auto vulkan = test::open_backend(engine::Backend::vulkan, &why);
+    MESHQUILT_REQUIRE_DEVICE(vulkan, why);
   }
   const auto dir = test::scratch_dir("backend_parity");
   const auto swatch = dir / "chain.ply";

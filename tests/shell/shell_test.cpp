@@ -17,6 +17,7 @@
 #include "shell/stretch_metric.h"
 #include "spatial/intersecting_pairs.h"
 #include "support/surface_fixtures.h"
+#include "support/backends.h"
 
 namespace meshquilt {
 namespace {
@@ -24,10 +25,6 @@ namespace {
 using test::flat_grid;
 using test::icosphere;
 
-bool ci() {
-  const char* value = std::getenv("CI");
-  return value && std::string(value) == "true";
-}
 
 double det3(const Vec3& a, const Vec3& b, const Vec3& c) { return glm::dot(a, glm::cross(b, c)); }
 
@@ -359,14 +356,6 @@ TEST(StretchMetric, IsOneForASimilarityAndAboveOneOtherwise) {
 
 // ---- stretch minimization -----------------------------------------------------------------
 
-std::unique_ptr<engine::Device> open_backend(engine::BackendChoice choice, std::string* why) {
-  try {
-    return engine::open_device(choice);
-  } catch (const DeviceError& error) {
-    *why = error.what();
-    return nullptr;
-  }
-}
 
 // Brute-force check of the map's injectivity on a dense sample: each sampled texture point maps
 // to a shell point that exactly one shell tetrahedron holds (brute force over all), and that
@@ -460,11 +449,8 @@ TEST(StretchMinimization, BunnyShellIsValidAndItsMapBijective) {
 
 TEST(StretchMinimization, VulkanAndCpuAgree) {
   std::string why;
-  auto vulkan = open_backend(engine::BackendChoice::vulkan, &why);
-  if (!vulkan) {
-    if (ci()) FAIL() << "CI=true and no Vulkan device: " << why;
-    GTEST_SKIP() << "no Vulkan device: " << why;
-  }
+  auto vulkan = test::open_backend(engine::Backend::vulkan, &why);
+  MESHQUILT_REQUIRE_DEVICE(vulkan, why);
   auto cpu = engine::open_device(engine::BackendChoice::cpu);
   const TriMesh sphere = icosphere(2);
   const BaseSurface base(sphere);

@@ -25,6 +25,7 @@
 #include "spatial/intersecting_pairs.h"
 #include "swatch/chainmail.h"
 #include "swatch/weave.h"
+#include "support/backends.h"
 
 namespace meshquilt {
 namespace {
@@ -257,14 +258,11 @@ TEST(SurfaceQuilting, HalvingTheScaleQuadruplesTheElements) {
 TEST(SurfaceQuilting, BackEndsAgree) {
   const TriMesh swatch = make_chainmail(ChainmailOptions::small());
   const TriMesh sphere = read_mesh(kSource / "data/sphere.off");
-  std::unique_ptr<engine::Device> probe;
-  try {
-    probe = engine::open_device(engine::BackendChoice::vulkan);
-  } catch (const DeviceError& e) {
-    if (std::getenv("CI")) FAIL() << "CI needs a Vulkan device: " << e.what();
-    GTEST_SKIP() << e.what();
+  {
+    std::string why;
+    const auto probe = test::open_backend(engine::Backend::vulkan, &why);
+    MESHQUILT_REQUIRE_DEVICE(probe, why);
   }
-  probe.reset();
   // Normal displacement and the original shell map: byte-identical.
   for (Embed embed : {Embed::normal, Embed::original_shell}) {
     const SurfaceRun cpu = run_surface(sphere, swatch, 0.3, engine::BackendChoice::cpu, 12, {}, embed);
