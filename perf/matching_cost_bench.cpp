@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "device.h"
-#include "error.h"
+#include "core/error.h"
 #include "matching_cost.h"
 #include "spatial/near_face_grid.h"
 
