@@ -24,6 +24,7 @@ struct InspectArgs {
   std::vector<double> region;
   double shell_height = 0.0;
   bool json = false;
+  bool rings = false;
 };
 
 }  // namespace
@@ -58,6 +59,10 @@ void add_inspect_command(CLI::App& app) {
                     ->check(CLI::PositiveNumber);
   shell->needs(base);
   plane->excludes(base);
+  cmd->add_flag("--rings", args->rings,
+                "the link graph of the elements taken as rings (chain mail): links per ring, pieces, "
+                "median ring radius; with --swatch its ratio to the swatch's and, with --plane or --base, "
+                "missing rings");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the readable report");
 
   cmd->callback([args, shell] {
@@ -67,6 +72,7 @@ void add_inspect_command(CLI::App& app) {
     if (!args->base.empty()) base_mesh = read_mesh(args->base);
     InspectOptions options;
     options.plane = args->plane;
+    options.rings = args->rings;
     if (!args->region.empty())
       options.plane_options.region = {{args->region[0], args->region[1]}, {args->region[2], args->region[3]}};
     options.mesh_name = args->mesh.string();

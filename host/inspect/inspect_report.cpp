@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "inspect/element_statistics.h"
 #include "inspect/element_topology.h"
+#include "inspect/ring_links.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -35,6 +36,62 @@ TriMesh welded_or_throw(const TriMesh& mesh, double tolerance, const std::string
   welded.elements.clear();  // elements are the connected components here
   if (welded.num_faces() == 0) throw InputError(name + ": no faces left after welding coincident vertices");
   return welded;
+}
+
+// The xy area a mesh's elements were grown over: the region asked, or the mesh's xy footprint.
+double plane_area(const TriMesh& mesh, const PlaneCoverageOptions& options) {
+  if (options.region) {
+    const auto& [lo, hi] = *options.region;
+    return (hi.x - lo.x) * (hi.y - lo.y);
+  }
+  Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const Vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return (hi.x - lo.x) * (hi.y - lo.y);
+}
+
+double surface_area(const TriMesh& mesh) {
+  double area = 0.0;
+  for (const Tri& t : mesh.triangles)
+    area += 0.5 * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]));
+  return area;
+}
+
+// Rings per unit of x-y area in a swatch, counted in windows of its ring centres' span (each side
+// 15% to 35% in, eleven windows averaged: a single window's edges fall on rows of a lattice or
+// between them, and the count jumps), away from the border where the tiling's period and the
+// swatch's extent differ. Nothing for a swatch too small for the windows to hold 4 rings.
+std::optional<double> ring_density(const std::vector<RingCentreLine>& lines) {
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const RingCentreLine& l : lines) lo = glm::min(lo, glm::dvec2(l.centre)), hi = glm::max(hi, glm::dvec2(l.centre));
+  double sum = 0.0;
+  int windows = 0;
+  for (int k = 0; k <= 10; ++k) {
+    const double in = 0.15 + 0.02 * k;
+    const glm::dvec2 a = lo + in * (hi - lo), b = hi - in * (hi - lo);
+    int inside = 0;
+    for (const RingCentreLine& l : lines)
+      inside += l.centre.x >= a.x && l.centre.x <= b.x && l.centre.y >= a.y && l.centre.y <= b.y;
+    const double window = (b.x - a.x) * (b.y - a.y);
+    if (inside < 4 || !(window > 0.0)) continue;
+    sum += inside / window;
+    ++windows;
+  }
+  if (windows == 0) return std::nullopt;
+  return sum / windows;
+}
+
+InspectReport::Rings ring_report(const RingLinks& links) {
+  InspectReport::Rings r;
+  r.rings = links.rings;
+  r.links = static_cast<int64_t>(links.links.size());
+  r.histogram = links.histogram;
+  r.linked_to_3_share = links.linked_to_3_share;
+  r.mean_links = links.mean_links;
+  r.loose_rings = links.loose_rings;
+  r.pieces = links.pieces;
+  r.largest_piece_share = links.largest_piece_share;
+  r.median_radius = links.median_radius;
+  return r;
 }
 
 // Median element size, with a fallback for flat or point-like elements so grids stay finite.
@@ -80,10 +137,26 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   report.median_element_extent = median(measures.extent);
   timer.lap("element sizes");
 
+  if (options.rings) {
+    report.rings = ring_report(ring_links(mesh, topology.face_element, topology.elements));
+    timer.lap("rings");
+  }
+
   if (swatch_input) {
     const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, options.swatch_name);
     int32_t count = 0;
     const std::vector<int32_t> swatch_elements = face_components(swatch, &count);
+    if (report.rings) {
+      const RingLinks swatch_rings = ring_links(swatch, swatch_elements, count);
+      if (swatch_rings.median_radius > 0.0)
+        report.rings->radius_ratio = report.rings->median_radius / swatch_rings.median_radius;
+      const std::optional<double> density = ring_density(ring_centre_lines(swatch, swatch_elements, count));
+      if (density && options.plane) report.rings->expected_rings = *density * plane_area(mesh, options.plane_options);
+      // Over a base the swatch was scaled: its density follows from the ring sizes.
+      if (density && base_input && report.rings->radius_ratio)
+        report.rings->expected_rings =
+            *density / (*report.rings->radius_ratio * *report.rings->radius_ratio) * surface_area(*base_input);
+    }
     const ElementMeasures sm = element_measures(swatch, swatch_elements, count);
     InspectReport::Swatch s;
     s.elements = count;
@@ -138,6 +211,24 @@ nlohmann::ordered_json to_json(const InspectReport& r) {
     j["coverage_cell_size"] = r.plane->cell_size;
     j["coverage_grid"] = {r.plane->cells_x, r.plane->cells_y};
   }
+  if (r.rings) {
+    nlohmann::ordered_json k;
+    k["rings"] = r.rings->rings;
+    k["links"] = r.rings->links;
+    k["links_histogram"] = r.rings->histogram;
+    k["linked_to_3_share"] = r.rings->linked_to_3_share;
+    k["mean_links"] = r.rings->mean_links;
+    k["loose_rings"] = r.rings->loose_rings;
+    k["pieces"] = r.rings->pieces;
+    k["largest_piece_share"] = r.rings->largest_piece_share;
+    k["median_radius"] = r.rings->median_radius;
+    if (r.rings->radius_ratio) k["radius_ratio"] = *r.rings->radius_ratio;
+    if (r.rings->expected_rings) {
+      k["expected_rings"] = *r.rings->expected_rings;
+      k["missing_rings"] = *r.rings->expected_rings - r.rings->rings;
+    }
+    j["rings"] = k;
+  }
   if (r.base) {
     j["coverage"] = r.base->coverage;
     j["coverage_radius"] = r.base->radius;
@@ -167,6 +258,19 @@ std::string to_text(const InspectReport& r) {
   if (r.plane) {
     s << "coverage:      " << r.plane->coverage << " of the x-y footprint, largest gap " << r.plane->largest_gap << " ("
       << r.plane->cells_x << " x " << r.plane->cells_y << " cells of " << r.plane->cell_size << ")\n";
+  }
+  if (r.rings) {
+    const InspectReport::Rings& k = *r.rings;
+    s << "rings:         " << k.rings << " rings, " << k.links << " links; " << 100.0 * k.linked_to_3_share
+      << "% linked to >= 3, mean " << k.mean_links << " links, " << k.loose_rings << " loose; " << k.pieces
+      << " pieces, the largest " << 100.0 * k.largest_piece_share << "% of the rings\n";
+    s << "ring links:    ";
+    for (size_t n = 0; n < k.histogram.size(); ++n) s << (n ? ", " : "") << n << ": " << k.histogram[n];
+    s << "\n";
+    s << "ring radius:   median " << k.median_radius;
+    if (k.radius_ratio) s << ", " << *k.radius_ratio << " x the swatch's";
+    if (k.expected_rings) s << "; " << *k.expected_rings - k.rings << " missing of " << *k.expected_rings << " expected";
+    s << "\n";
   }
   if (r.base) {
     s << "coverage:      " << r.base->coverage << " of the base area (radius " << r.base->radius << ")\n";

@@ -20,6 +20,7 @@ struct InspectOptions {
   double weld_tolerance = kWeldTolerance;  //!< relative to the bbox diagonal (topology.h default 1e-6)
   bool plane = false;                      //!< measure coverage of the x-y footprint (planar output)
   std::optional<double> shell_height;      //!< H for --base, in units of the base's bbox diagonal
+  bool rings = false;                      //!< the link graph of the elements taken as rings
   PlaneCoverageOptions plane_options;      //!< margin and grid limits for the plane coverage
   BaseCoverageOptions base_options;        //!< sampling of the base (shell_height above wins)
   // Names used in error messages (the CLI passes the file paths).
@@ -54,6 +55,22 @@ struct InspectReport {
   std::optional<PlaneCoverage> plane;  //!< with options.plane
   std::optional<BaseCoverage> base;    //!< with a base mesh
   std::optional<double> shell_height;  //!< H used for base.outside_shell_vertices
+
+  //! With options.rings: which rings pass through which (inspect/ring_links.h).
+  struct Rings {
+    int32_t rings = 0;
+    int64_t links = 0;
+    std::vector<int32_t> histogram;  //!< rings with 0, 1, 2, ... links
+    double linked_to_3_share = 0.0;
+    double mean_links = 0.0;
+    int32_t loose_rings = 0;
+    int32_t pieces = 0;
+    double largest_piece_share = 0.0;
+    double median_radius = 0.0;
+    std::optional<double> radius_ratio;    //!< with a swatch: median radius / the swatch's
+    std::optional<double> expected_rings;  //!< with a swatch and a plane or base: its ring density x area
+  };
+  std::optional<Rings> rings;
 
   //! Seconds spent per stage (weld, topology, intersections, ...), in order; not in the JSON.
   std::vector<std::pair<std::string, double>> timings;

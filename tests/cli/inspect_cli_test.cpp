@@ -115,6 +115,33 @@ TEST_F(InspectCli, JsonReportOfLinkedRings) {
   EXPECT_LE(j.at("coverage").get<double>(), 1.0);
 }
 
+// The link graph of a quilted chain mail: a planar quilt of the generator's mail is one linked
+// piece in which rings away from the border pass through four others, at the swatch's ring size.
+TEST_F(InspectCli, RingsOfAQuiltedChainMail) {
+  const fs::path swatch = dir_ / "chain.ply", quilt = dir_ / "quilt.ply", stats = dir_ / "stats.json";
+  const std::string cli = quote(MESHQUILT_CLI);
+  ASSERT_EQ(std::system((cli + " swatch chainmail --rows 6 --columns 5 -o " + quote(swatch.string()) + " >/dev/null").c_str()), 0);
+  ASSERT_EQ(std::system((cli + " synth --swatch " + quote(swatch.string()) + " --plane 2x2 --backend cpu --progress none" +
+                         " --stats " + quote(stats.string()) + " -o " + quote(quilt.string()) + " >/dev/null")
+                            .c_str()),
+            0);
+  const nlohmann::json rect = nlohmann::json::parse(slurp(stats)).at("plane_rect");
+  const std::string region = std::to_string(rect[0].get<double>()) + "," + std::to_string(rect[1].get<double>()) + "," +
+                             std::to_string(rect[2].get<double>()) + "," + std::to_string(rect[3].get<double>());
+  const CliRun r = run({quilt.string(), "--rings", "--swatch", swatch.string(), "--plane", "--region", region, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json k = nlohmann::json::parse(r.out).at("rings");
+  const int rings = k.at("rings").get<int>();
+  EXPECT_EQ(rings, nlohmann::json::parse(r.out).at("elements").get<int>());
+  EXPECT_EQ(k.at("pieces").get<int>(), 1);
+  EXPECT_EQ(k.at("loose_rings").get<int>(), 0);
+  EXPECT_GT(k.at("linked_to_3_share").get<double>(), 0.7);
+  EXPECT_EQ(k.at("links_histogram").size(), 5u);  // nobody links more than four
+  EXPECT_NEAR(k.at("radius_ratio").get<double>(), 1.0, 0.05);
+  // The plane holds the swatch's density of rings, less a border's worth at most.
+  EXPECT_NEAR(k.at("missing_rings").get<double>(), 0.0, 0.1 * k.at("expected_rings").get<double>());
+}
+
 TEST_F(InspectCli, BaseHeightsAndReadableReport) {
   TriMesh base;
   base.positions = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}};
