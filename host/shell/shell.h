@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "surface/conformal_patch.h"
+#include "surface/surface_types.h"
 
 namespace meshquilt {
 

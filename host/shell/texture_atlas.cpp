@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "mesh/topology.h"
+#include "surface/conformal_patch.h"
 
 namespace meshquilt {
 namespace {

@@ -15,7 +15,7 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
-#include "surface/conformal_patch.h"
+#include "surface/surface_types.h"
 
 namespace meshquilt {
 

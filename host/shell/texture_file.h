@@ -21,7 +21,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "surface/surface_quilting.h"
+#include "surface/surface_types.h"
 #include "shell/shell_embedding.h"
 
 namespace meshquilt {

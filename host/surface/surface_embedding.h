@@ -7,7 +7,7 @@
 #include <functional>
 #include <memory>
 
-#include "surface/conformal_patch.h"
+#include "surface/surface_types.h"
 
 namespace meshquilt {
 

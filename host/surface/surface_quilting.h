@@ -34,12 +34,6 @@ struct SurfaceQuiltOptions : QuiltOptions {
   EmbeddingFactory embedding;
 };
 
-//! An output vertex in local coordinates: a base point and its height above it (base units).
-struct LocalVertex {
-  SurfacePoint point;
-  double height = 0.0;
-};
-
 //! A synthesized layer: the embedded mesh and where each of its vertices lies over the base.
 struct SurfaceQuilt {
   TriMesh mesh;                    //!< with per-face element ids and sources
