@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "numerics/sparse_solve.h"
+#include "surface/field_aligned_chart.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 
@@ -283,7 +284,35 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
   return uv;
 }
 
-SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius) {
+namespace {
+
+// Fold-overs and the spread of plane area / base area over the patch's faces (faces of
+// negligible area left out), for uv scaled by `scale`.
+void measure_distortion(const BaseSurface& base, SurfacePatch& patch, double scale) {
+  double base_area = 0.0;
+  for (int32_t f : patch.faces) base_area += base.face_areas[f];
+  double lo = std::numeric_limits<double>::max(), hi = 0.0;
+  patch.flipped_faces = 0;
+  for (size_t f = 0; f < patch.faces.size(); ++f) {
+    const int32_t* v = &patch.local_vertex_of_face_[3 * f];
+    const double signed_area = 0.5 * cross2(patch.uv[v[1]] - patch.uv[v[0]], patch.uv[v[2]] - patch.uv[v[0]]);
+    const double area = base.face_areas[patch.faces[f]];
+    if (area <= 1e-12 * base_area) continue;
+    const double ratio = signed_area * scale * scale / area;
+    if (ratio <= 0.0) {
+      ++patch.flipped_faces;
+      continue;
+    }
+    lo = std::min(lo, ratio);
+    hi = std::max(hi, ratio);
+  }
+  patch.area_distortion = hi > 0.0 && lo < std::numeric_limits<double>::max() ? hi / lo : 1.0;
+}
+
+}  // namespace
+
+SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
+                                  const std::vector<Vec3>* face_field) {
   const TriMesh& mesh = base.mesh;
   SurfacePatch patch;
   patch.radius = radius;
@@ -341,33 +370,31 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   patch.sorted_positions_.resize(faces.size());
   for (size_t k = 0; k < faces.size(); ++k) patch.sorted_positions_[k] = static_cast<int32_t>(k);
 
+  // A field-aligned chart where it does not fold; the conformal map, scaled to the patch's area,
+  // otherwise (and where no field is given).
+  if (face_field) {
+    patch.uv = field_aligned_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices, *face_field);
+    measure_distortion(base, patch, 1.0);
+    if (patch.flipped_faces == 0) {
+      patch.field_aligned = true;
+      const glm::dvec2 seed_plane = patch.to_plane(seed);
+      for (glm::dvec2& p : patch.uv) p -= seed_plane;
+      return patch;
+    }
+    patch.flipped_faces = 0;
+  }
   patch.uv = conformal_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices);
-
-  // Scale to the base's area, the seed at the origin; measure distortion and fold-overs.
+  // Scaled to the base's area.
   double plane_area = 0.0;
-  std::vector<double> signed_areas(faces.size());
   for (size_t f = 0; f < faces.size(); ++f) {
     const int32_t* v = &patch.local_vertex_of_face_[3 * f];
-    signed_areas[f] = 0.5 * cross2(patch.uv[v[1]] - patch.uv[v[0]], patch.uv[v[2]] - patch.uv[v[0]]);
-    plane_area += signed_areas[f];
+    plane_area += 0.5 * cross2(patch.uv[v[1]] - patch.uv[v[0]], patch.uv[v[2]] - patch.uv[v[0]]);
   }
   double base_area = 0.0;
   for (int32_t f : faces) base_area += base.face_areas[f];
   const double scale = plane_area > 0.0 ? std::sqrt(base_area / plane_area) : 1.0;
+  measure_distortion(base, patch, scale);
   for (glm::dvec2& p : patch.uv) p *= scale;
-  double lo = std::numeric_limits<double>::max(), hi = 0.0;
-  for (size_t f = 0; f < faces.size(); ++f) {
-    const double area = base.face_areas[faces[f]];
-    if (area <= 1e-12 * base_area) continue;
-    const double ratio = signed_areas[f] * scale * scale / area;
-    if (ratio <= 0.0) {
-      ++patch.flipped_faces;
-      continue;
-    }
-    lo = std::min(lo, ratio);
-    hi = std::max(hi, ratio);
-  }
-  patch.area_distortion = hi > 0.0 && lo < std::numeric_limits<double>::max() ? hi / lo : 1.0;
   const glm::dvec2 seed_plane = patch.to_plane(seed);
   for (glm::dvec2& p : patch.uv) p -= seed_plane;
   return patch;

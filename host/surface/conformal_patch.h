@@ -24,6 +24,7 @@ struct SurfacePatch {
   double radius = 0.0;            //!< geodesic radius (along edges) it was grown to
   double area_distortion = 1.0;   //!< max over min over faces of plane area / base area
   int flipped_faces = 0;          //!< faces whose plane image is mirrored
+  bool field_aligned = false;     //!< the chart follows the field (field_aligned_chart.h)
 
   //! Plane position of a surface point on a patch face. \pre face_index(p.face) >= 0
   glm::dvec2 to_plane(const SurfacePoint& p) const;
@@ -62,8 +63,11 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
 //! scaled so the plane area equals the base area, translated so the seed is the origin. Where
 //! those faces are no disk (the ball wraps around a handle or covers a closed component), the
 //! patch keeps the ones reached from the seed face across edges, nearest first, while they stay
-//! a disk: it is cut open where its fronts meet.
+//! a disk: it is cut open where its fronts meet. With `face_field` (#base faces, a tangent
+//! direction each) the patch is flattened along the field instead (field_aligned_flattening, in
+//! base units, field_aligned set) wherever that chart does not fold.
 //! \throw SolverError when the LSCM system cannot be solved.
-SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius);
+SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
+                                  const std::vector<Vec3>* face_field = nullptr);
 
 }  // namespace meshquilt

@@ -93,6 +93,9 @@ class SurfaceDriver {
     // A patch must hold the footprint of any placement that covers the sub-patch: a disk of the
     // swatch's diagonal around the seed, plus a cell.
     full_radius_ = (glm::length(swatch_.extent) + cell_) * unit_;
+    if (options.field_aligned_charts)
+      for (size_t f = 0; f < base_mesh.num_faces(); ++f)
+        face_field_.push_back(field_.at(base_, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)}));
   }
 
   SurfaceQuilt run() {
@@ -150,13 +153,14 @@ class SurfaceDriver {
     const double max_distortion = options_.max_area_distortion * std::ldexp(1.0, holes_.tries(seed_cell));
     SurfacePatch patch;
     for (int attempt = 0;; ++attempt) {
-      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink);
+      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, face_field_.empty() ? nullptr : &face_field_);
       const bool good = patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
       if (good || attempt >= options_.max_shrinks) break;
       shrink *= 0.75;
     }
     if (shrink < 1.0) ++stats_.shrunk_patches;
-    patch.transform(field_angle(base_, patch, seed, field_.at(base_, seed)), 1.0 / unit_);
+    // A field-aligned chart already runs along the field; a conformal one is turned to it.
+    patch.transform(patch.field_aligned ? 0.0 : field_angle(base_, patch, seed, field_.at(base_, seed)), 1.0 / unit_);
     patch.index();
     return patch;
   }
@@ -416,6 +420,7 @@ class SurfaceDriver {
   int sub_nx_ = 1, sub_ny_ = 1;
   double total_area_ = 0.0, processed_area_ = 0.0;
   std::unique_ptr<SurfaceEmbedding> embedding_;
+  std::vector<Vec3> face_field_;  // per base face, for field-aligned charts
   std::vector<SurfaceElement> elements_;
   std::vector<uint8_t> alive_;
 };

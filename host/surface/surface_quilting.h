@@ -30,6 +30,9 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! a cell that an earlier one left uncovered allows twice the distortion per earlier attempt.
   double max_area_distortion = 4.0;
   int max_shrinks = 4;  //!< shrink a patch at most this many times (by 0.75 each)
+  //! Flatten patches along the guidance field (surface/field_aligned_chart.h) where that does not
+  //! fold, instead of by LSCM turned to the field at the seed (docs/decisions/0032).
+  bool field_aligned_charts = true;
   //! Places local coordinates in space; empty: displacement along vertex normals.
   EmbeddingFactory embedding;
 };
