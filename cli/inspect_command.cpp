@@ -25,6 +25,7 @@ struct InspectArgs {
   double shell_height = 0.0;
   bool json = false;
   bool rings = false;
+  bool yarns = false;
 };
 
 }  // namespace
@@ -63,6 +64,9 @@ void add_inspect_command(CLI::App& app) {
                 "the link graph of the elements taken as rings (chain mail): links per ring, pieces, "
                 "median ring radius; with --swatch its ratio to the swatch's and, with --plane or --base, "
                 "missing rings");
+  cmd->add_flag("--yarns", args->yarns,
+                "yarn lengths: each closed element taken as a tube (length A^2 / (4 pi V)); the "
+                "length-weighted median, and with --swatch in swatch lengths");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the readable report");
 
   cmd->callback([args, shell] {
@@ -73,6 +77,7 @@ void add_inspect_command(CLI::App& app) {
     InspectOptions options;
     options.plane = args->plane;
     options.rings = args->rings;
+    options.yarns = args->yarns;
     if (!args->region.empty())
       options.plane_options.region = {{args->region[0], args->region[1]}, {args->region[2], args->region[3]}};
     options.mesh_name = args->mesh.string();

@@ -12,6 +12,7 @@
 #include "inspect/element_statistics.h"
 #include "inspect/element_topology.h"
 #include "inspect/ring_links.h"
+#include "inspect/yarn_lengths.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -141,11 +142,35 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     report.rings = ring_report(ring_links(mesh, topology.face_element, topology.elements));
     timer.lap("rings");
   }
+  if (options.yarns) {
+    const TubeMeasures tubes = tube_measures(mesh, topology.face_element, topology.elements);
+    InspectReport::Yarns y;
+    std::vector<double> radii;
+    for (size_t e = 0; e < tubes.length.size(); ++e)
+      if (tubes.length[e] > 0.0) ++y.yarns, radii.push_back(tubes.radius[e]);
+    y.weighted_median_length = length_weighted_median(tubes.length);
+    y.median_radius = radii.empty() ? 0.0 : median(radii);
+    report.yarns = y;
+    timer.lap("yarns");
+  }
 
   if (swatch_input) {
     const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, options.swatch_name);
     int32_t count = 0;
     const std::vector<int32_t> swatch_elements = face_components(swatch, &count);
+    if (report.yarns) {
+      const TubeMeasures tubes = tube_measures(swatch, swatch_elements, count);
+      const double length = length_weighted_median(tubes.length);
+      std::vector<double> radii;
+      for (size_t e = 0; e < tubes.length.size(); ++e)
+        if (tubes.length[e] > 0.0) radii.push_back(tubes.radius[e]);
+      const double radius = radii.empty() ? 0.0 : median(radii);
+      if (length > 0.0 && radius > 0.0 && report.yarns->median_radius > 0.0) {
+        report.yarns->swatch_length = length;
+        report.yarns->radius_ratio = report.yarns->median_radius / radius;
+        report.yarns->in_swatch_lengths = report.yarns->weighted_median_length / (length * *report.yarns->radius_ratio);
+      }
+    }
     if (report.rings) {
       const RingLinks swatch_rings = ring_links(swatch, swatch_elements, count);
       if (swatch_rings.median_radius > 0.0)
@@ -229,6 +254,16 @@ nlohmann::ordered_json to_json(const InspectReport& r) {
     }
     j["rings"] = k;
   }
+  if (r.yarns) {
+    nlohmann::ordered_json y;
+    y["yarns"] = r.yarns->yarns;
+    y["weighted_median_length"] = r.yarns->weighted_median_length;
+    y["median_radius"] = r.yarns->median_radius;
+    if (r.yarns->swatch_length) y["swatch_length"] = *r.yarns->swatch_length;
+    if (r.yarns->radius_ratio) y["radius_ratio"] = *r.yarns->radius_ratio;
+    if (r.yarns->in_swatch_lengths) y["in_swatch_lengths"] = *r.yarns->in_swatch_lengths;
+    j["yarns"] = y;
+  }
   if (r.base) {
     j["coverage"] = r.base->coverage;
     j["coverage_radius"] = r.base->radius;
@@ -271,6 +306,11 @@ std::string to_text(const InspectReport& r) {
     if (k.radius_ratio) s << ", " << *k.radius_ratio << " x the swatch's";
     if (k.expected_rings) s << "; " << *k.expected_rings - k.rings << " missing of " << *k.expected_rings << " expected";
     s << "\n";
+  }
+  if (r.yarns) {
+    s << "yarns:         " << r.yarns->yarns << " yarns, length-weighted median length " << r.yarns->weighted_median_length;
+    if (r.yarns->in_swatch_lengths) s << " (" << *r.yarns->in_swatch_lengths << " swatch lengths)";
+    s << ", median radius " << r.yarns->median_radius << "\n";
   }
   if (r.base) {
     s << "coverage:      " << r.base->coverage << " of the base area (radius " << r.base->radius << ")\n";

@@ -21,6 +21,7 @@ struct InspectOptions {
   bool plane = false;                      //!< measure coverage of the x-y footprint (planar output)
   std::optional<double> shell_height;      //!< H for --base, in units of the base's bbox diagonal
   bool rings = false;                      //!< the link graph of the elements taken as rings
+  bool yarns = false;                      //!< the elements' lengths taken as tubes (yarns)
   PlaneCoverageOptions plane_options;      //!< margin and grid limits for the plane coverage
   BaseCoverageOptions base_options;        //!< sampling of the base (shell_height above wins)
   // Names used in error messages (the CLI passes the file paths).
@@ -71,6 +72,19 @@ struct InspectReport {
     std::optional<double> expected_rings;  //!< with a swatch and a plane or base: its ring density x area
   };
   std::optional<Rings> rings;
+
+  //! With options.yarns: each closed element taken as a tube (inspect/yarn_lengths.h).
+  struct Yarns {
+    int32_t yarns = 0;                   //!< elements that enclose a volume
+    double weighted_median_length = 0.0; //!< length-weighted median yarn length
+    double median_radius = 0.0;
+    std::optional<double> swatch_length;  //!< with a swatch: its length-weighted median yarn length
+    std::optional<double> radius_ratio;   //!< with a swatch: median radius / the swatch's (its scale)
+    //! weighted_median_length / (swatch_length x radius_ratio): yarn length in swatch lengths at
+    //! the scale the output was made at.
+    std::optional<double> in_swatch_lengths;
+  };
+  std::optional<Yarns> yarns;
 
   //! Seconds spent per stage (weld, topology, intersections, ...), in order; not in the JSON.
   std::vector<std::pair<std::string, double>> timings;
