@@ -63,7 +63,7 @@ void run_batch_command(const BatchArgs& args) {
 void add_batch_command(CLI::App& app) {
   auto args = std::make_shared<BatchArgs>();
   CLI::App* cmd = app.add_subcommand("batch", "Run a manifest of synth jobs (sharded, resumable) or report on it");
-  cmd->add_option("manifest", args->manifest, "jobs as JSON lines, or a .json array; see the README")->required();
+  cmd->add_option("manifest", args->manifest, "jobs as JSON lines, or a .json array; see docs/cli.md")->required();
   cmd->add_option("--shard", args->shard,
                   "run jobs whose index is I modulo N (I/N); default: from a Slurm array task's variables, else 0/1");
   cmd->add_option("--jobs", args->jobs, "jobs running at once")->capture_default_str();

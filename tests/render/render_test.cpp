@@ -157,7 +157,7 @@ INSTANTIATE_TEST_SUITE_P(Framing, TopViewShare,
                                            ShareCase{0.01, 0.01, 64, 48}));  // scale does not matter
 
 TEST(TopViewShare, UnitSquareInDefaultImage) {
-  // The README's example: 1024 x 768 with 5% margins gives a 691.2-pixel square, 60.8% of the
+  // The default 1024 x 768 image with 5% margins shows a unit square as 691.2 pixels, 60.8% of the
   // image.
   RenderOptions options;
   options.view = View::top;
@@ -348,7 +348,7 @@ TEST(PngEncoding, LibpngReadsBackTheSamePixels) {
   EXPECT_EQ(pixels, image.rgb);
 }
 
-// `meshquilt render`: errors are one line naming the file or option with the README's exit
+// `meshquilt render`: errors are one line naming the file or option with the documented exit
 // code, and neither a new output nor a change to an existing one.
 class RenderCli : public ::testing::Test {
  protected:

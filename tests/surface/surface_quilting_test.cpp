@@ -169,7 +169,7 @@ SurfaceRun run_surface(const TriMesh& raw_base, const TriMesh& swatch, double sc
 }
 
 // What a finished run must meet. The defaults are the bar of the curved-surface issue; a base that
-// does not meet it yet gets its own, measured, bound (see the README's known limits).
+// does not meet it yet gets its own, measured, bound (see docs/performance.md, known limits).
 struct QualityBar {
   double max_dropped_share = 0.02;  // dropped elements / (kept + dropped)
   double min_height = -0.01;        // lowest vertex, signed, in bounding-box diagonals
