@@ -13,6 +13,7 @@
 #include "inspect/element_topology.h"
 #include "inspect/ring_links.h"
 #include "inspect/yarn_lengths.h"
+#include "mesh/measures.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -45,9 +46,8 @@ double plane_area(const TriMesh& mesh, const PlaneCoverageOptions& options) {
     const auto& [lo, hi] = *options.region;
     return (hi.x - lo.x) * (hi.y - lo.y);
   }
-  Vec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const Vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  return (hi.x - lo.x) * (hi.y - lo.y);
+  const Box3 box = bounding_box(mesh.positions);
+  return (box.hi.x - box.lo.x) * (box.hi.y - box.lo.y);
 }
 
 double surface_area(const TriMesh& mesh) {
@@ -145,11 +145,8 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   if (options.yarns) {
     const TubeMeasures tubes = tube_measures(mesh, topology.face_element, topology.elements);
     InspectReport::Yarns y;
-    std::vector<double> radii;
-    for (size_t e = 0; e < tubes.length.size(); ++e)
-      if (tubes.length[e] > 0.0) ++y.yarns, radii.push_back(tubes.radius[e]);
+    y.median_radius = median_tube_radius(tubes, &y.yarns);
     y.weighted_median_length = length_weighted_median(tubes.length);
-    y.median_radius = radii.empty() ? 0.0 : median(radii);
     report.yarns = y;
     timer.lap("yarns");
   }
@@ -161,10 +158,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     if (report.yarns) {
       const TubeMeasures tubes = tube_measures(swatch, swatch_elements, count);
       const double length = length_weighted_median(tubes.length);
-      std::vector<double> radii;
-      for (size_t e = 0; e < tubes.length.size(); ++e)
-        if (tubes.length[e] > 0.0) radii.push_back(tubes.radius[e]);
-      const double radius = radii.empty() ? 0.0 : median(radii);
+      const double radius = median_tube_radius(tubes);
       if (length > 0.0 && radius > 0.0 && report.yarns->median_radius > 0.0) {
         report.yarns->swatch_length = length;
         report.yarns->radius_ratio = report.yarns->median_radius / radius;

@@ -8,45 +8,11 @@
 
 #include "inspect/element_statistics.h"
 #include "mesh/disjoint_sets.h"
+#include "numerics/symmetric_eigen.h"
 #include "spatial/box_grid.h"
 
 namespace meshquilt {
 namespace {
-
-// The unit eigenvector of the smallest eigenvalue of a symmetric 3 x 3 matrix (cyclic Jacobi).
-Vec3 least_axis(double m[3][3]) {
-  double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    const double off = m[0][1] * m[0][1] + m[0][2] * m[0][2] + m[1][2] * m[1][2];
-    if (off < 1e-30 * (m[0][0] * m[0][0] + m[1][1] * m[1][1] + m[2][2] * m[2][2]) + 1e-300) break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (m[p][q] == 0.0) continue;
-        const double theta = 0.5 * (m[q][q] - m[p][p]) / m[p][q];
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
-        for (int k = 0; k < 3; ++k) {  // m <- J^T m J
-          const double mkp = m[k][p], mkq = m[k][q];
-          m[k][p] = c * mkp - s * mkq;
-          m[k][q] = s * mkp + c * mkq;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double mpk = m[p][k], mqk = m[q][k];
-          m[p][k] = c * mpk - s * mqk;
-          m[q][k] = s * mpk + c * mqk;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double vkp = v[k][p], vkq = v[k][q];
-          v[k][p] = c * vkp - s * vkq;
-          v[k][q] = s * vkp + c * vkq;
-        }
-      }
-  }
-  int least = 0;
-  for (int k = 1; k < 3; ++k)
-    if (m[k][k] < m[least][least]) least = k;
-  return glm::normalize(Vec3(v[0][least], v[1][least], v[2][least]));
-}
 
 // The solid angle (over 4 pi, signed) under which segment b1-b2 sees segment a1-a2: one term of
 // the Gauss linking integral of two polygons.
@@ -83,13 +49,13 @@ std::vector<RingCentreLine> ring_centre_lines(const TriMesh& mesh, const std::ve
     RingCentreLine& line = lines[e];
     for (int32_t v : vs) line.centre += mesh.positions[v];
     line.centre /= static_cast<double>(vs.size());
-    double covariance[3][3] = {};
+    Symmetric3 covariance{};
     for (int32_t v : vs) {
       const Vec3 d = mesh.positions[v] - line.centre;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) covariance[i][j] += d[i] * d[j];
     }
-    line.normal = least_axis(covariance);
+    line.normal = glm::normalize(symmetric_eigenvectors(covariance)[0]);
     // An in-plane frame (u, w) for the angles.
     const Vec3 helper = std::abs(line.normal.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     const Vec3 u = glm::normalize(glm::cross(line.normal, helper)), w = glm::cross(line.normal, u);

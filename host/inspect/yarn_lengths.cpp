@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "inspect/element_statistics.h"
+
 namespace meshquilt {
 
 TubeMeasures tube_measures(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements) {
@@ -32,6 +34,14 @@ TubeMeasures tube_measures(const TriMesh& mesh, const std::vector<int32_t>& face
     m.radius[e] = 2.0 * volume[e] / area[e];
   }
   return m;
+}
+
+double median_tube_radius(const TubeMeasures& tubes, int32_t* count) {
+  std::vector<double> radii;
+  for (size_t e = 0; e < tubes.length.size(); ++e)
+    if (tubes.length[e] > 0.0) radii.push_back(tubes.radius[e]);
+  if (count) *count = static_cast<int32_t>(radii.size());
+  return radii.empty() ? 0.0 : median(radii);
 }
 
 double length_weighted_median(std::vector<double> lengths) {

@@ -18,6 +18,9 @@ struct TubeMeasures {
 };
 TubeMeasures tube_measures(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements);
 
+//! The median radius of the elements that are tubes (length > 0), and how many there are.
+double median_tube_radius(const TubeMeasures& tubes, int32_t* count = nullptr);
+
 //! The length-weighted median of `lengths` (zeros left out): the length L such that yarns no
 //! longer than L make up half the total length. 0 when there is none.
 double length_weighted_median(std::vector<double> lengths);

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "numerics/sparse_solve.h"
+#include "numerics/symmetric_eigen.h"
 #include "mesh/atomic_write.h"
 
 namespace meshquilt {
@@ -61,9 +62,10 @@ Vec3 principal_axis(const BaseSurface& base) {
     const Eigen::Vector3d e(d.x, d.y, d.z);
     covariance += weight[v] * e * e.transpose();
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-  const Eigen::Vector3d axis = solver.eigenvectors().col(2);
-  Vec3 a(axis.x(), axis.y(), axis.z());
+  Symmetric3 matrix;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) matrix[i][j] = covariance(i, j);
+  Vec3 a = symmetric_eigenvectors(matrix)[2];
   // A deterministic sign: the largest component positive.
   int largest = 0;
   for (int k = 1; k < 3; ++k)
