@@ -98,6 +98,8 @@ SynthSettings check_synth_args(const SynthArgs& args) {
   SynthSettings settings;
   const bool curved = !args.base.empty();
   if (!curved) parse_plane(args.plane, &settings.width, &settings.height);
+  if (args.symmetry != 0 && args.symmetry != 1 && args.symmetry != 2 && args.symmetry != 4)
+    throw InputError("--symmetry: expected 0, 1, 2 or 4, got " + std::to_string(args.symmetry), ErrorKind::invalid_option);
   if (curved && !(args.scale > 0.0 && args.scale <= 10.0))
     throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ErrorKind::invalid_option);
   if (curved && !(args.shell_height >= 0.0 && std::isfinite(args.shell_height)))
@@ -152,6 +154,9 @@ void add_curved_summary(const SynthArgs& args, const SurfaceQuiltStats& stats, c
   summary["base_faces"] = stats.base_faces;
   summary["scale"] = args.scale;
   summary["shrunk_patches"] = stats.shrunk_patches;
+  summary["layout_windows"] = stats.layout_windows;
+  summary["field_symmetry"] = stats.field_symmetry;
+  summary["cones"] = stats.cones;
   summary["outside_vertices"] = stats.outside_vertices;
   summary["shell_height"] = stats.shell_height;
   summary["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;
@@ -167,6 +172,8 @@ SynthResult synth_curved(const SynthArgs& args, const TriMesh& swatch, const Tri
   static_cast<QuiltOptions&>(options) = common;
   options.scale = args.scale;
   options.shell_height = args.shell_height;
+  options.shared_layout = args.shared_layout;
+  options.symmetry = args.symmetry;
   const BaseSurface surface(base);
   const GuidanceField field = interpolate_field(surface, constraints);
   if (!args.write_field.empty()) write_field_obj(surface, field, 0.5 * mean_edge_length(base), args.write_field);

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "numerics/sparse_solve.h"
 #include "surface/field_aligned_chart.h"
+#include "surface/base_layout.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 
@@ -309,10 +310,44 @@ void measure_distortion(const BaseSurface& base, SurfacePatch& patch, double sca
   patch.area_distortion = hi > 0.0 && lo < std::numeric_limits<double>::max() ? hi / lo : 1.0;
 }
 
+// Plane positions from a window's corners; corners of one vertex that unfold to different places
+// (round a cone of the layout) become separate vertices, so the patch is slit there.
+void slit_open(SurfacePatch& patch, const std::vector<glm::dvec2>& corner_uv, double tolerance) {
+  std::vector<std::vector<int32_t>> copies(patch.vertices.size());  // vertex -> its plane copies
+  patch.uv.assign(patch.vertices.size(), glm::dvec2(0.0));
+  for (size_t corner = 0; corner < corner_uv.size(); ++corner) {
+    int32_t& vertex = patch.local_vertex_of_face_[corner];
+    const glm::dvec2 p = corner_uv[corner];
+    auto& known = copies[vertex];
+    const auto same = std::find_if(known.begin(), known.end(),
+                                   [&](int32_t copy) { return glm::length(patch.uv[copy] - p) <= tolerance; });
+    if (same != known.end()) {
+      vertex = *same;
+      continue;
+    }
+    int32_t copy = vertex;
+    if (!known.empty()) {
+      copy = static_cast<int32_t>(patch.vertices.size());
+      patch.vertices.push_back(patch.vertices[vertex]);
+      patch.uv.emplace_back(0.0);
+    }
+    patch.uv[copy] = p;
+    known.push_back(copy);
+    vertex = copy;
+  }
+}
+
+// The patch moved so that the seed is the plane's origin.
+SurfacePatch& centred(SurfacePatch& patch, const SurfacePoint& seed) {
+  const glm::dvec2 seed_plane = patch.to_plane(seed);
+  for (glm::dvec2& p : patch.uv) p -= seed_plane;
+  return patch;
+}
+
 }  // namespace
 
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
-                                  const std::vector<Vec3>* face_field) {
+                                  const std::vector<Vec3>* face_field, const BaseLayout* layout) {
   const TriMesh& mesh = base.mesh;
   SurfacePatch patch;
   patch.radius = radius;
@@ -370,16 +405,38 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   patch.sorted_positions_.resize(faces.size());
   for (size_t k = 0; k < faces.size(); ++k) patch.sorted_positions_[k] = static_cast<int32_t>(k);
 
-  // A field-aligned chart where it does not fold; the conformal map, scaled to the patch's area,
-  // otherwise (and where no field is given).
-  if (face_field) {
+  // A window of the shared layout where it unfolds without a cone or a fold; a field-aligned
+  // chart of the patch alone (the layout's field, combed over the window) where that does not
+  // fold; the conformal map, scaled to the patch's area, otherwise and where no layout is given.
+  if (layout) {
+    const LayoutWindow window =
+        layout->unfold(faces, seed.face, patch.local_vertex_of_face_, static_cast<int32_t>(patch.vertices.size()));
+    SurfacePatch slit = patch;
+    slit_open(slit, window.corner_uv, 1e-6 * radius);
+    measure_distortion(base, slit, 1.0);
+    if (slit.flipped_faces == 0) {
+      slit.chart = PatchChart::layout_window;
+      return centred(slit, seed);
+    }
+    std::vector<Vec3> face_field(mesh.num_faces(), Vec3(0.0));
+    for (size_t k = 0; k < faces.size(); ++k) {
+      Vec3 d = layout->axis(faces[k]);
+      for (int q = 0; q < (4 / layout->symmetry()) * window.face_turn[k]; ++q) d = glm::cross(base.face_normals[faces[k]], d);
+      face_field[faces[k]] = d;
+    }
+    patch.uv = field_aligned_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices, face_field);
+    measure_distortion(base, patch, 1.0);
+    if (patch.flipped_faces == 0) {
+      patch.chart = PatchChart::field_aligned;
+      return centred(patch, seed);
+    }
+    patch.flipped_faces = 0;
+  } else if (face_field) {
     patch.uv = field_aligned_flattening(base, faces, patch.local_vertex_of_face_, patch.vertices, *face_field);
     measure_distortion(base, patch, 1.0);
     if (patch.flipped_faces == 0) {
-      patch.field_aligned = true;
-      const glm::dvec2 seed_plane = patch.to_plane(seed);
-      for (glm::dvec2& p : patch.uv) p -= seed_plane;
-      return patch;
+      patch.chart = PatchChart::field_aligned;
+      return centred(patch, seed);
     }
     patch.flipped_faces = 0;
   }
@@ -395,9 +452,7 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   const double scale = plane_area > 0.0 ? std::sqrt(base_area / plane_area) : 1.0;
   measure_distortion(base, patch, scale);
   for (glm::dvec2& p : patch.uv) p *= scale;
-  const glm::dvec2 seed_plane = patch.to_plane(seed);
-  for (glm::dvec2& p : patch.uv) p -= seed_plane;
-  return patch;
+  return centred(patch, seed);
 }
 
 }  // namespace meshquilt

@@ -15,6 +15,15 @@
 
 namespace meshquilt {
 
+class BaseLayout;
+
+//! How a patch's plane was made.
+enum class PatchChart {
+  layout_window,  //!< a window of the shared layout (seamless_layout.h)
+  field_aligned,  //!< the patch alone flattened along the field (field_aligned_chart.h)
+  conformal,      //!< the patch alone flattened by LSCM, to be turned to the field at its seed
+};
+
 //! A patch of base faces with a parameter plane. Plane coordinates are in base units, the seed
 //! point at the origin, orientation preserving (the base's outward normal is the plane's +z).
 struct SurfacePatch {
@@ -24,7 +33,7 @@ struct SurfacePatch {
   double radius = 0.0;            //!< geodesic radius (along edges) it was grown to
   double area_distortion = 1.0;   //!< max over min over faces of plane area / base area
   int flipped_faces = 0;          //!< faces whose plane image is mirrored
-  bool field_aligned = false;     //!< the chart follows the field (field_aligned_chart.h)
+  PatchChart chart = PatchChart::conformal;
 
   //! Plane position of a surface point on a patch face. \pre face_index(p.face) >= 0
   glm::dvec2 to_plane(const SurfacePoint& p) const;
@@ -64,10 +73,13 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
 //! those faces are no disk (the ball wraps around a handle or covers a closed component), the
 //! patch keeps the ones reached from the seed face across edges, nearest first, while they stay
 //! a disk: it is cut open where its fronts meet. With `face_field` (#base faces, a tangent
-//! direction each) the patch is flattened along the field instead (field_aligned_flattening, in
-//! base units, field_aligned set) wherever that chart does not fold.
+//! direction each) and no layout the patch is flattened along the field (field_aligned_flattening,
+//! in base units) wherever that chart does not fold. With a `layout` the patch is a window of it where
+//! that unfolds without a cone or a fold, else flattened along its field (field_aligned_flattening,
+//! in base units) where that does not fold; LSCM is the last resort.
 //! \throw SolverError when the LSCM system cannot be solved.
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
-                                  const std::vector<Vec3>* face_field = nullptr);
+                                  const std::vector<Vec3>* face_field = nullptr,
+                                  const BaseLayout* layout = nullptr);
 
 }  // namespace meshquilt

@@ -212,7 +212,10 @@ GuidanceField interpolate_field(const BaseSurface& base, const std::vector<Field
         if (column[v] >= 0) raw[v] = x(column[v], 0) * basis[v][0] + x(column[v] + 1, 0) * basis[v][1];
     }
     for (size_t v = 0; v < n; ++v)
-      if (fixed[v] >= 0) raw[v] = held[fixed[v]];
+      if (fixed[v] >= 0) {
+        raw[v] = held[fixed[v]];
+        field.held_vertices.push_back(static_cast<int32_t>(v));
+      }
   }
   field.directions.resize(n);
   for (size_t v = 0; v < n; ++v) {

@@ -35,6 +35,7 @@ std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, 
 struct GuidanceField {
   std::vector<Vec3> directions;  //!< #V
   Vec3 axis{1.0, 0.0, 0.0};      //!< the default field's axis (see interpolate_field)
+  std::vector<int32_t> held_vertices;  //!< vertices whose direction a constraint gives
 
   //! The field at a surface point: interpolated, projected to the face's plane, unit length (any
   //! unit tangent of the face where the interpolation vanishes: at a singularity).

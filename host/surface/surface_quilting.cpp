@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <unordered_map>
 
@@ -12,7 +13,10 @@
 #include "mesh/topology.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
+#include "quilt/swatch_symmetry.h"
+#include "surface/direction_field.h"
 #include "surface/element_placement.h"
+#include "surface/base_layout.h"
 #include "surface/surface_cells.h"
 
 namespace meshquilt {
@@ -93,9 +97,30 @@ class SurfaceDriver {
     // A patch must hold the footprint of any placement that covers the sub-patch: a disk of the
     // swatch's diagonal around the seed, plus a cell.
     full_radius_ = (glm::length(swatch_.extent) + cell_) * unit_;
-    if (options.field_aligned_charts)
+    if (options.shared_layout) {
+      layout_ = make_layout();
+    } else {
       for (size_t f = 0; f < base_mesh.num_faces(); ++f)
         face_field_.push_back(field_.at(base_, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)}));
+    }
+  }
+
+  // The smoothest n-direction field that holds the guidance field's given directions, and the
+  // layout that follows it.
+  std::unique_ptr<BaseLayout> make_layout() {
+    StageTimer timer(seconds_, "layout");
+    const int n = options_.symmetry > 0 ? options_.symmetry : rotational_symmetry(swatch_);
+    if (n != 1 && n != 2 && n != 4) throw OptionError("{symmetry} must be 1, 2 or 4");
+    const size_t faces = base_.mesh.num_faces();
+    std::vector<Vec3> target(faces);
+    for (size_t f = 0; f < faces; ++f) target[f] = field_.at(base_, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)});
+    std::vector<double> weight(faces, default_field_weight(base_));
+    for (int32_t v : field_.held_vertices)
+      for (int32_t f : base_.vertex_faces[v]) weight[f] = 10.0;
+    auto layout = std::make_unique<BaseLayout>(base_, n, target, weight);
+    stats_.field_symmetry = n;
+    stats_.cones = layout->cones();
+    return layout;
   }
 
   SurfaceQuilt run() {
@@ -153,14 +178,17 @@ class SurfaceDriver {
     const double max_distortion = options_.max_area_distortion * std::ldexp(1.0, holes_.tries(seed_cell));
     SurfacePatch patch;
     for (int attempt = 0;; ++attempt) {
-      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, face_field_.empty() ? nullptr : &face_field_);
+      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get());
       const bool good = patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
       if (good || attempt >= options_.max_shrinks) break;
       shrink *= 0.75;
     }
     if (shrink < 1.0) ++stats_.shrunk_patches;
-    // A field-aligned chart already runs along the field; a conformal one is turned to it.
-    patch.transform(patch.field_aligned ? 0.0 : field_angle(base_, patch, seed, field_.at(base_, seed)), 1.0 / unit_);
+    if (patch.chart == PatchChart::layout_window) ++stats_.layout_windows;
+    // A layout window or a field-aligned chart already runs along the field; a conformal one is
+    // turned to it.
+    const bool turned = patch.chart == PatchChart::conformal;
+    patch.transform(turned ? field_angle(base_, patch, seed, field_.at(base_, seed)) : 0.0, 1.0 / unit_);
     patch.index();
     return patch;
   }
@@ -420,7 +448,8 @@ class SurfaceDriver {
   int sub_nx_ = 1, sub_ny_ = 1;
   double total_area_ = 0.0, processed_area_ = 0.0;
   std::unique_ptr<SurfaceEmbedding> embedding_;
-  std::vector<Vec3> face_field_;  // per base face, for field-aligned charts
+  std::unique_ptr<BaseLayout> layout_;
+  std::vector<Vec3> face_field_;  // per base face, for field-aligned charts of single patches
   std::vector<SurfaceElement> elements_;
   std::vector<uint8_t> alive_;
 };

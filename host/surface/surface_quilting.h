@@ -30,9 +30,12 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! a cell that an earlier one left uncovered allows twice the distortion per earlier attempt.
   double max_area_distortion = 4.0;
   int max_shrinks = 4;  //!< shrink a patch at most this many times (by 0.75 each)
-  //! Flatten patches along the guidance field (surface/field_aligned_chart.h) where that does not
-  //! fold, instead of by LSCM turned to the field at the seed (docs/decisions/0032).
-  bool field_aligned_charts = true;
+  //! Patches are windows of one layout of the base that follows the smoothest n-direction field
+  //! holding the guidance field's given directions (surface/base_layout.h, docs/decisions/0033);
+  //! off: each patch is flattened alone along the guidance field (docs/decisions/0032).
+  bool shared_layout = false;
+  //! n of that field: 1, 2 or 4; 0 takes the swatch's rotational symmetry (quilt/swatch_symmetry.h).
+  int symmetry = 0;
   //! Places local coordinates in space; empty: displacement along vertex normals.
   EmbeddingFactory embedding;
 };
@@ -47,6 +50,9 @@ struct SurfaceQuilt {
 struct SurfaceQuiltStats : QuiltStats {
   int base_faces = 0;          //!< after welding
   int shrunk_patches = 0;      //!< patches shrunk for distortion, fold-overs or closing up
+  int layout_windows = 0;      //!< patches laid out as windows of the shared layout
+  int field_symmetry = 0;      //!< n of the layout's field (0 without a layout)
+  int cones = 0;               //!< singular vertices of the layout's field
   int outside_vertices = 0;    //!< vertices placed outside their patch, put on its nearest face
   double shell_height = 0.0;   //!< base units
   double diagonal = 0.0;       //!< base bounding-box diagonal

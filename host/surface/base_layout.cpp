@@ -1,0 +1,94 @@
+#include "surface/base_layout.h"
+
+#include <unordered_map>
+
+#include "mesh/topology.h"
+
+namespace meshquilt {
+namespace {
+
+// Bases below this many faces are split until they reach it (at most three times).
+constexpr size_t kLayoutFaces = 1000;
+
+}  // namespace
+
+TriMesh split_faces(const TriMesh& mesh, int levels) {
+  TriMesh result = mesh;
+  for (int level = 0; level < levels; ++level) {
+    TriMesh split;
+    split.positions = result.positions;
+    std::unordered_map<uint64_t, int32_t> midpoint;
+    const auto middle = [&](int32_t a, int32_t b) {
+      const auto [it, fresh] = midpoint.emplace(undirected_edge_key(a, b), static_cast<int32_t>(split.positions.size()));
+      if (fresh) split.positions.push_back(0.5 * (result.positions[a] + result.positions[b]));
+      return it->second;
+    };
+    split.triangles.reserve(4 * result.triangles.size());
+    for (const Tri& t : result.triangles) {
+      const int32_t ab = middle(t[0], t[1]), bc = middle(t[1], t[2]), ca = middle(t[2], t[0]);
+      split.triangles.push_back({t[0], ab, ca});
+      split.triangles.push_back({ab, t[1], bc});
+      split.triangles.push_back({ca, bc, t[2]});
+      split.triangles.push_back({ab, bc, ca});
+    }
+    result = std::move(split);
+  }
+  return result;
+}
+
+BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target,
+                       const std::vector<double>& weight)
+    : base_(base) {
+  size_t faces = base.mesh.num_faces();
+  while (faces > 0 && faces < kLayoutFaces && levels_ < 3) {
+    faces *= 4;
+    ++levels_;
+  }
+  fine_mesh_ = split_faces(base.mesh, levels_);
+  fine_ = std::make_unique<BaseSurface>(fine_mesh_);
+  const size_t parts = size_t{1} << (2 * levels_);
+  std::vector<Vec3> fine_target(fine_mesh_.num_faces());
+  std::vector<double> fine_weight(fine_mesh_.num_faces());
+  for (size_t f = 0; f < fine_mesh_.num_faces(); ++f) {
+    fine_target[f] = target[f / parts];
+    fine_weight[f] = weight[f / parts];
+  }
+  layout_ = seamless_layout(*fine_, smoothest_direction_field(*fine_, symmetry, fine_target, fine_weight));
+}
+
+LayoutWindow BaseLayout::unfold(const std::vector<int32_t>& faces, int32_t start, const std::vector<int32_t>& corner_vertex,
+                                int32_t vertices) const {
+  if (levels_ == 0) return unfold_window(*fine_, layout_, faces, start, corner_vertex, vertices);
+  const int32_t parts = 1 << (2 * levels_);
+  // The base's own vertices keep their local indices; the midpoints get new ones after them.
+  std::unordered_map<int32_t, int32_t> local;
+  for (size_t k = 0; k < faces.size(); ++k)
+    for (int c = 0; c < 3; ++c) local.emplace(base_.mesh.triangles[faces[k]][c], corner_vertex[3 * k + c]);
+  int32_t next = vertices;
+  std::vector<int32_t> fine_faces, fine_corners;
+  fine_faces.reserve(faces.size() * parts);
+  fine_corners.reserve(3 * faces.size() * parts);
+  for (int32_t f : faces)
+    for (int32_t p = 0; p < parts; ++p) {
+      fine_faces.push_back(f * parts + p);
+      for (int32_t v : fine_mesh_.triangles[f * parts + p]) {
+        const auto [it, fresh] = local.emplace(v, next);
+        if (fresh) ++next;
+        fine_corners.push_back(it->second);
+      }
+    }
+  LayoutWindow fine = unfold_window(*fine_, layout_, fine_faces, start * parts, fine_corners, next);
+  LayoutWindow window;
+  window.consistent = fine.consistent;
+  window.corner_uv.resize(3 * faces.size());
+  window.face_turn.resize(faces.size());
+  // Corner c of a face lies in part c of it at every level, as that part's corner c.
+  const int32_t corner_part = (parts - 1) / 3;
+  for (size_t k = 0; k < faces.size(); ++k) {
+    window.face_turn[k] = fine.face_turn[k * parts];
+    for (int c = 0; c < 3; ++c) window.corner_uv[3 * k + c] = fine.corner_uv[3 * (k * parts + c * corner_part) + c];
+  }
+  return window;
+}
+
+}  // namespace meshquilt

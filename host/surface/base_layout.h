@@ -1,0 +1,51 @@
+#pragma once
+//! The shared layout of a base as the surface driver uses it: the smoothest n-direction field
+//! holding the guidance field's given directions, and the seamless layout that follows it
+//! (seamless_layout.h), computed over the base split 1-to-4 where it is coarse. A field's cones
+//! need room: on the 320 faces of `data/sphere.off` the smoothest line field has two index-1
+//! singularities, around which no layout opens without folding; split once, four of index 1/2.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "surface/seamless_layout.h"
+
+namespace meshquilt {
+
+class BaseLayout {
+ public:
+  //! target, weight: per base face, as smoothest_direction_field takes them.
+  //! \throw SolverError when a solve fails.
+  BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight);
+  BaseLayout(const BaseLayout&) = delete;
+  BaseLayout& operator=(const BaseLayout&) = delete;
+
+  //! A window of the layout over base faces (a face-connected set holding `start`): its corners'
+  //! plane coordinates at the base's vertices; face_turn per base face (that of its first part).
+  //! corner_vertex  3 x #faces local vertex index of each corner; vertices: the number of them
+  LayoutWindow unfold(const std::vector<int32_t>& faces, int32_t start, const std::vector<int32_t>& corner_vertex,
+                      int32_t vertices) const;
+
+  //! The layout's u direction on a base face (that of its first part).
+  Vec3 axis(int32_t base_face) const { return layout_.axis[first_part(base_face)]; }
+  int symmetry() const { return layout_.symmetry; }
+  int cones() const { return static_cast<int>(layout_.cones.size()); }
+  int levels() const { return levels_; }           //!< times the base was split 1-to-4
+  const SeamlessLayout& layout() const { return layout_; }
+
+ private:
+  int32_t first_part(int32_t base_face) const { return base_face << (2 * levels_); }
+
+  const BaseSurface& base_;
+  int levels_ = 0;
+  TriMesh fine_mesh_;
+  std::unique_ptr<BaseSurface> fine_;
+  SeamlessLayout layout_;
+};
+
+//! The mesh split 1-to-4 (edge midpoints) `levels` times: the same surface; the first vertices
+//! are the mesh's own, and the parts of face f are faces f x 4^levels to (f + 1) x 4^levels - 1.
+TriMesh split_faces(const TriMesh& mesh, int levels);
+
+}  // namespace meshquilt

@@ -1,0 +1,346 @@
+#include "surface/seamless_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numeric>
+#include <unordered_map>
+
+#include <Eigen/Sparse>
+#include <glm/geometric.hpp>
+
+#include "numerics/sparse_solve.h"
+
+namespace meshquilt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// How strongly the layout's scale is held at 1 against being even and aligned.
+constexpr double kUnitWeight = 0.1;
+
+int corner_of(const Tri& t, int32_t v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
+
+// The rotation index of a turn by `angle` against the field's period, in [0, n).
+int turn_index(double angle, int n) {
+  const double period = 2.0 * kPi / n;
+  const long k = std::lround(angle / period);
+  return static_cast<int>(((k % n) + n) % n);
+}
+
+// Rotates each face's direction by a multiple of 2 pi / n so that neighbours across a spanning
+// tree of faces agree (the field's "combing"); marks the tree's edges.
+void comb(const BaseSurface& base, const DirectionField& field, SeamlessLayout& layout,
+          std::vector<std::array<uint8_t, 3>>& tree) {
+  const TriMesh& mesh = base.mesh;
+  const size_t faces = mesh.num_faces();
+  const double period = 2.0 * kPi / field.symmetry;
+  layout.axis = field.directions;
+  tree.assign(faces, {0, 0, 0});
+  std::vector<uint8_t> reached(faces, 0);
+  std::deque<int32_t> queue;
+  for (size_t root = 0; root < faces; ++root) {
+    if (reached[root]) continue;
+    reached[root] = 1;
+    queue.push_back(static_cast<int32_t>(root));
+    while (!queue.empty()) {
+      const int32_t f = queue.front();
+      queue.pop_front();
+      const Tri& t = mesh.triangles[f];
+      for (int k = 0; k < 3; ++k) {
+        const int32_t g = base.face_across[f][k];
+        if (g < 0 || reached[g]) continue;
+        reached[g] = 1;
+        const Vec3 carried = transport_across(base, f, g, t[k], t[(k + 1) % 3], layout.axis[f]);
+        const Vec3 n = base.face_normals[g];
+        const double angle = signed_angle(carried, layout.axis[g], n);
+        // Turn g's direction back by the whole periods between it and f's.
+        const double back = -period * std::round(angle / period);
+        layout.axis[g] = std::cos(back) * layout.axis[g] + std::sin(back) * glm::cross(n, layout.axis[g]);
+        tree[f][k] = 1;
+        tree[g][corner_of(mesh.triangles[g], t[(k + 1) % 3])] = 1;
+        queue.push_back(g);
+      }
+    }
+  }
+}
+
+// Seams: interior edges off the tree, less branches that dangle from a vertex that needs no cut
+// (not a cone, not on a boundary), pruned while the edge carries no turn.
+void cut_open(const BaseSurface& base, const std::vector<std::array<uint8_t, 3>>& tree, SeamlessLayout& layout) {
+  const TriMesh& mesh = base.mesh;
+  const size_t faces = mesh.num_faces();
+  std::vector<uint8_t> keeps_cuts(mesh.num_vertices(), 0);
+  for (int32_t v : layout.cones) keeps_cuts[v] = 1;
+  layout.cut.assign(faces, {0, 0, 0});
+  std::vector<int> degree(mesh.num_vertices(), 0);
+  for (size_t f = 0; f < faces; ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (g < 0) {
+        keeps_cuts[t[k]] = keeps_cuts[t[(k + 1) % 3]] = 1;
+        continue;
+      }
+      if (tree[f][k]) continue;
+      layout.cut[f][k] = 1;
+      if (static_cast<size_t>(g) > f) ++degree[t[k]], ++degree[t[(k + 1) % 3]];
+    }
+  }
+  // The cut edge at a vertex, as (face, edge) from the lower face.
+  const auto cut_edge_at = [&](int32_t v, int32_t& f_out, int& k_out) {
+    for (int32_t f : base.vertex_faces[v]) {
+      const Tri& t = mesh.triangles[f];
+      for (int k = 0; k < 3; ++k)
+        if (layout.cut[f][k] && (t[k] == v || t[(k + 1) % 3] == v)) {
+          f_out = f;
+          k_out = k;
+          return true;
+        }
+    }
+    return false;
+  };
+  std::vector<int32_t> stack;
+  for (size_t v = 0; v < mesh.num_vertices(); ++v)
+    if (degree[v] == 1 && !keeps_cuts[v]) stack.push_back(static_cast<int32_t>(v));
+  while (!stack.empty()) {
+    const int32_t v = stack.back();
+    stack.pop_back();
+    int32_t f = -1;
+    int k = 0;
+    if (degree[v] != 1 || !cut_edge_at(v, f, k) || layout.turn[f][k] != 0) continue;
+    const Tri& t = mesh.triangles[f];
+    const int32_t g = base.face_across[f][k];
+    const int32_t w = t[k] == v ? t[(k + 1) % 3] : t[k];
+    layout.cut[f][k] = 0;
+    layout.cut[g][corner_of(mesh.triangles[g], t[(k + 1) % 3])] = 0;
+    --degree[v];
+    if (--degree[w] == 1 && !keeps_cuts[w]) stack.push_back(w);
+  }
+}
+
+// Layout vertices: face corners joined across the edges that are not cut.
+int32_t make_wedges(const BaseSurface& base, SeamlessLayout& layout) {
+  const TriMesh& mesh = base.mesh;
+  std::vector<int32_t> parent(3 * mesh.num_faces());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](int32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (g < 0 || layout.cut[f][k]) continue;
+      for (int32_t v : {t[k], t[(k + 1) % 3]})
+        parent[find(static_cast<int32_t>(3 * f) + corner_of(t, v))] = find(3 * g + corner_of(mesh.triangles[g], v));
+    }
+  }
+  layout.corner_wedge.assign(parent.size(), -1);
+  std::unordered_map<int32_t, int32_t> wedge_of_root;
+  for (size_t c = 0; c < parent.size(); ++c) {
+    const auto [it, fresh] = wedge_of_root.emplace(find(static_cast<int32_t>(c)), static_cast<int32_t>(wedge_of_root.size()));
+    layout.corner_wedge[c] = it->second;
+  }
+  return static_cast<int32_t>(wedge_of_root.size());
+}
+
+// The layout with the seams' transitions held by a stiff penalty. Per face, with X the axis and
+// Y = normal x X: grad u along X, grad v along Y, both of one length (conformal), so the layout
+// may take whatever even scale makes the field a gradient; and, weakly, that length 1.
+void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges) {
+  const TriMesh& mesh = base.mesh;
+  const int quarter = 4 / layout.symmetry;  // quarter turns per unit of turn
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(2 * wedges, 1);
+  double diagonal = 0.0;
+  // Adds weight x (sum of coefficient x unknown - value)^2.
+  const auto add_row = [&](const std::vector<std::pair<int32_t, double>>& row, double value, double weight) {
+    for (const auto& [i, wi] : row) {
+      rhs(i, 0) += weight * wi * value;
+      for (const auto& [j, wj] : row) triplets.emplace_back(i, j, weight * wi * wj);
+    }
+  };
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    const double area = base.face_areas[f];
+    if (area <= 0.0) continue;
+    const Vec3 normal = base.face_normals[f];
+    const Vec3 x = layout.axis[f], y = glm::cross(normal, x);
+    std::vector<std::pair<int32_t, double>> ux, uy, vx, vy;  // grad u . X, ...
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 g = glm::cross(normal, mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[(k + 1) % 3]]) / (2.0 * area);
+      const int32_t w = layout.corner_wedge[3 * f + k];
+      ux.emplace_back(2 * w, glm::dot(g, x));
+      uy.emplace_back(2 * w, glm::dot(g, y));
+      vx.emplace_back(2 * w + 1, glm::dot(g, x));
+      vy.emplace_back(2 * w + 1, glm::dot(g, y));
+      diagonal = std::max(diagonal, area * glm::dot(g, g));
+    }
+    std::vector<std::pair<int32_t, double>> conformal = ux;
+    for (const auto& [i, c] : vy) conformal.emplace_back(i, -c);
+    add_row(uy, 0.0, area);
+    add_row(vx, 0.0, area);
+    add_row(conformal, 0.0, area);
+    add_row(ux, 1.0, kUnitWeight * area);
+    add_row(vy, 1.0, kUnitWeight * area);
+  }
+  // Seams: (U_g(a) - U_g(b)) - R(-turn) (U_f(a) - U_f(b)) = 0, both coordinates.
+  const double stiff = 1e10 * std::max(diagonal, 1e-300);
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (!layout.cut[f][k] || static_cast<size_t>(g) < f) continue;
+      const Tri& tg = mesh.triangles[g];
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      const int32_t fa = layout.corner_wedge[3 * f + k], fb = layout.corner_wedge[3 * f + (k + 1) % 3];
+      const int32_t ga = layout.corner_wedge[3 * g + corner_of(tg, a)], gb = layout.corner_wedge[3 * g + corner_of(tg, b)];
+      // R(-turn) as a 2 x 2 matrix from its action on the axes.
+      const glm::dvec2 ex = quarter_turned({1.0, 0.0}, quarter * layout.turn[f][k]);
+      const glm::dvec2 ey = quarter_turned({0.0, 1.0}, quarter * layout.turn[f][k]);
+      for (int row = 0; row < 2; ++row) {
+        const std::pair<int32_t, double> terms[6] = {{2 * ga + row, 1.0},         {2 * gb + row, -1.0},
+                                                     {2 * fa, -ex[row]},         {2 * fa + 1, -ey[row]},
+                                                     {2 * fb, ex[row]},          {2 * fb + 1, ey[row]}};
+        for (const auto& [i, wi] : terms)
+          for (const auto& [j, wj] : terms)
+            if (wi != 0.0 && wj != 0.0) triplets.emplace_back(i, j, stiff * wi * wj);
+      }
+    }
+  }
+  // Each piece's translation is free: a faint pull to the origin makes it definite.
+  for (int32_t k = 0; k < 2 * wedges; ++k) triplets.emplace_back(k, k, 1e-10 * std::max(diagonal, 1e-300));
+  Eigen::SparseMatrix<double> A(2 * wedges, 2 * wedges);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::MatrixXd x = solve_positive_definite(A, rhs, "seamless layout");
+  layout.uv.resize(static_cast<size_t>(wedges));
+  for (int32_t w = 0; w < wedges; ++w) layout.uv[w] = {x(2 * w, 0), x(2 * w + 1, 0)};
+}
+
+// Scales the layout so that its median scale (the square root of layout area over base area,
+// by base area) is 1: the texture's size is what was asked for over most of the base.
+void normalize_scale(const BaseSurface& base, SeamlessLayout& layout) {
+  std::vector<std::pair<double, double>> scales;  // (scale, base area)
+  double total = 0.0;
+  for (size_t f = 0; f < base.mesh.num_faces(); ++f) {
+    if (base.face_areas[f] <= 0.0) continue;
+    const glm::dvec2 a = layout.uv[layout.corner_wedge[3 * f]], b = layout.uv[layout.corner_wedge[3 * f + 1]],
+                     c = layout.uv[layout.corner_wedge[3 * f + 2]];
+    const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    if (area <= 0.0) continue;
+    scales.emplace_back(std::sqrt(area / base.face_areas[f]), base.face_areas[f]);
+    total += base.face_areas[f];
+  }
+  if (scales.empty()) return;
+  std::sort(scales.begin(), scales.end());
+  double below = 0.0;
+  for (const auto& [scale, area] : scales) {
+    below += area;
+    if (below < 0.5 * total) continue;
+    for (glm::dvec2& p : layout.uv) p /= scale;
+    return;
+  }
+}
+
+}  // namespace
+
+glm::dvec2 quarter_turned(const glm::dvec2& p, int quarter_turns) {
+  switch (((quarter_turns % 4) + 4) % 4) {
+    case 1: return {-p.y, p.x};
+    case 2: return {-p.x, -p.y};
+    case 3: return {p.y, -p.x};
+    default: return p;
+  }
+}
+
+SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field) {
+  const TriMesh& mesh = base.mesh;
+  SeamlessLayout layout;
+  layout.symmetry = field.symmetry;
+  std::vector<std::array<uint8_t, 3>> tree;
+  comb(base, field, layout, tree);
+  layout.turn.assign(mesh.num_faces(), {0, 0, 0});
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (g < 0 || tree[f][k]) continue;
+      const Vec3 carried = transport_across(base, static_cast<int32_t>(f), g, t[k], t[(k + 1) % 3], layout.axis[f]);
+      layout.turn[f][k] = static_cast<int8_t>(
+          turn_index(signed_angle(carried, layout.axis[g], base.face_normals[g]), field.symmetry));
+    }
+  }
+  DirectionField combed{field.symmetry, layout.axis};
+  const std::vector<int> index = field_indices(base, combed);
+  for (size_t v = 0; v < index.size(); ++v)
+    if (index[v] != 0) layout.cones.push_back(static_cast<int32_t>(v));
+  cut_open(base, tree, layout);
+  const int32_t wedges = make_wedges(base, layout);
+  solve_layout(base, layout, wedges);
+  normalize_scale(base, layout);
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (base.face_areas[f] <= 0.0) continue;
+    const glm::dvec2 a = layout.uv[layout.corner_wedge[3 * f]], b = layout.uv[layout.corner_wedge[3 * f + 1]],
+                     c = layout.uv[layout.corner_wedge[3 * f + 2]];
+    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0.0) ++layout.flipped_faces;
+  }
+  return layout;
+}
+
+LayoutWindow unfold_window(const BaseSurface& base, const SeamlessLayout& layout, const std::vector<int32_t>& faces,
+                           int32_t start, const std::vector<int32_t>& corner_vertex, int32_t vertices) {
+  const TriMesh& mesh = base.mesh;
+  const int quarter = 4 / layout.symmetry;
+  std::unordered_map<int32_t, int32_t> position;
+  for (size_t k = 0; k < faces.size(); ++k) position.emplace(faces[k], static_cast<int32_t>(k));
+  LayoutWindow window;
+  window.corner_uv.assign(3 * faces.size(), glm::dvec2(0.0));
+  std::vector<glm::dvec2> first(static_cast<size_t>(vertices), glm::dvec2(0.0));
+  window.face_turn.assign(faces.size(), 0);
+  std::vector<glm::dvec2> shift(faces.size(), glm::dvec2(0.0));
+  std::vector<uint8_t> reached(faces.size(), 0), placed(static_cast<size_t>(vertices), 0);
+  // Window coordinates of a layout point on face k: R(turn) p + shift.
+  const auto to_window = [&](size_t k, const glm::dvec2& p) {
+    return quarter_turned(p, quarter * window.face_turn[k]) + shift[k];
+  };
+  double tolerance = 0.0;
+  const auto it = position.find(start);
+  if (it == position.end()) return window;
+  std::deque<int32_t> queue{it->second};
+  reached[it->second] = 1;
+  while (!queue.empty()) {
+    const int32_t k = queue.front();
+    queue.pop_front();
+    const int32_t f = faces[k];
+    const Tri& t = mesh.triangles[f];
+    for (int c = 0; c < 3; ++c) {
+      const glm::dvec2 p = to_window(k, layout.uv[layout.corner_wedge[3 * f + c]]);
+      const int32_t local = corner_vertex[3 * k + c];
+      window.corner_uv[3 * k + c] = p;
+      tolerance = std::max(tolerance, 1e-6 * glm::length(mesh.positions[t[c]] - mesh.positions[t[(c + 1) % 3]]));
+      if (!placed[local]) {
+        placed[local] = 1;
+        first[local] = p;
+      } else if (glm::length(first[local] - p) > tolerance) {
+        window.consistent = false;
+      }
+    }
+    for (int e = 0; e < 3; ++e) {
+      const auto across = position.find(base.face_across[f][e]);
+      if (base.face_across[f][e] < 0 || across == position.end() || reached[across->second]) continue;
+      const int32_t j = across->second, g = faces[j];
+      reached[j] = 1;
+      window.face_turn[j] = (window.face_turn[k] + layout.turn[f][e]) % layout.symmetry;
+      // Through the shared corner a: the point keeps its window position.
+      const int32_t a = t[e];
+      const glm::dvec2 here = to_window(k, layout.uv[layout.corner_wedge[3 * f + e]]);
+      const glm::dvec2 there = layout.uv[layout.corner_wedge[3 * g + corner_of(mesh.triangles[g], a)]];
+      shift[j] = here - quarter_turned(there, quarter * window.face_turn[j]);
+      queue.push_back(j);
+    }
+  }
+  return window;
+}
+
+}  // namespace meshquilt

@@ -1,0 +1,178 @@
+// The shared layout of a base: the smoothest n-direction field in closed-form cases and against
+// Poincare-Hopf, the layout's seams, and windows of it, which must differ from each other by a
+// rotation through a multiple of 2 pi / n plus a translation, to rounding.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "surface/conformal_patch.h"
+#include "surface/direction_field.h"
+#include "surface/base_layout.h"
+#include "surface/seamless_layout.h"
+#include "support/surface_fixtures.h"
+
+namespace meshquilt {
+namespace {
+
+DirectionField smoothest(const BaseSurface& base, int n, const Vec3& along = Vec3(1.0, 0.0, 0.0)) {
+  std::vector<Vec3> target(base.mesh.num_faces(), along);
+  return smoothest_direction_field(base, n, target, std::vector<double>(target.size(), default_field_weight(base)));
+}
+
+int index_sum(const std::vector<int>& index) {
+  int sum = 0;
+  for (int i : index) sum += i;
+  return sum;
+}
+
+TEST(DirectionField, IndicesOfASphereSumToNTimesTwo) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  for (int n : {1, 2, 4}) {
+    const std::vector<int> index = field_indices(base, smoothest(base, n));
+    int cones = 0;
+    for (int i : index) cones += i != 0;
+    EXPECT_EQ(index_sum(index), 2 * n) << "n = " << n;
+    // The smoothest vector and line fields spread their singularities into 2n cones of index 1 / n.
+    if (n <= 2) EXPECT_EQ(cones, 2 * n) << "n = " << n;
+  }
+}
+
+TEST(DirectionField, AConstantTargetOnAPlaneIsKeptExactly) {
+  const TriMesh sheet = test::flat_grid(12, 9, 0.1, 0.25);
+  const BaseSurface base(sheet);
+  const Vec3 along = glm::normalize(Vec3(1.0, 0.4, 0.0));
+  for (int n : {1, 2, 4}) {
+    const DirectionField field = smoothest(base, n, along);
+    for (const Vec3& d : field.directions) {
+      // One of the n directions is `along`: n times the angle between them is a whole turn.
+      const double angle = std::atan2(glm::cross(along, d).z, glm::dot(along, d));
+      EXPECT_NEAR(std::remainder(n * angle, 2.0 * std::numbers::pi), 0.0, 1e-9) << "n = " << n;
+    }
+  }
+}
+
+// Per face: the 2 x 2 map from the face's tangent plane to the layout, as singular values.
+std::pair<double, double> stretch(const BaseSurface& base, const SeamlessLayout& layout, size_t f) {
+  const Tri& t = base.mesh.triangles[f];
+  const Vec3 p0 = base.mesh.positions[t[0]], p1 = base.mesh.positions[t[1]], p2 = base.mesh.positions[t[2]];
+  const Vec3 e1 = glm::normalize(p1 - p0), e2 = glm::cross(base.face_normals[f], e1);
+  const glm::dvec2 q1(glm::dot(p1 - p0, e1), 0.0), q2(glm::dot(p2 - p0, e1), glm::dot(p2 - p0, e2));
+  const glm::dvec2 a = layout.uv[layout.corner_wedge[3 * f]], b = layout.uv[layout.corner_wedge[3 * f + 1]] - a,
+                   c = layout.uv[layout.corner_wedge[3 * f + 2]] - a;
+  const double det = q1.x * q2.y;
+  const double j00 = (b.x * q2.y) / det, j01 = (c.x * q1.x - b.x * q2.x) / det;
+  const double j10 = (b.y * q2.y) / det, j11 = (c.y * q1.x - b.y * q2.x) / det;
+  const double e = 0.5 * (j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11), d = j00 * j11 - j01 * j10;
+  const double s1 = std::sqrt(e + std::sqrt(std::max(0.0, e * e - d * d)));
+  return {s1, d / s1};
+}
+
+TEST(SeamlessLayout, AConstantFieldOnAPlaneLaysItOutIsometrically) {
+  const TriMesh sheet = test::flat_grid(10, 10, 0.1, 0.2);
+  const BaseSurface base(sheet);
+  const SeamlessLayout layout = seamless_layout(base, smoothest(base, 2, Vec3(0.6, 0.8, 0.0)));
+  EXPECT_TRUE(layout.cones.empty());
+  EXPECT_EQ(layout.flipped_faces, 0);
+  for (size_t f = 0; f < sheet.num_faces(); ++f) {
+    const auto [largest, smallest] = stretch(base, layout, f);
+    EXPECT_NEAR(largest, 1.0, 1e-6);
+    EXPECT_NEAR(smallest, 1.0, 1e-6);
+  }
+}
+
+TEST(SeamlessLayout, SeamsAreRotationsByTheSymmetryPlusTranslations) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  const SeamlessLayout layout = seamless_layout(base, smoothest(base, 2));
+  EXPECT_EQ(layout.cones.size(), 4u);
+  EXPECT_EQ(layout.flipped_faces, 0);
+  int seams = 0;
+  for (size_t f = 0; f < sphere.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (!layout.cut[f][k]) continue;
+      ++seams;
+      const Tri& t = sphere.triangles[f];
+      const Tri& tg = sphere.triangles[g];
+      const auto corner = [](const Tri& tri, int32_t v) { return tri[0] == v ? 0 : tri[1] == v ? 1 : 2; };
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      const glm::dvec2 in_f = layout.uv[layout.corner_wedge[3 * f + corner(t, b)]] - layout.uv[layout.corner_wedge[3 * f + corner(t, a)]];
+      const glm::dvec2 in_g = layout.uv[layout.corner_wedge[3 * g + corner(tg, b)]] - layout.uv[layout.corner_wedge[3 * g + corner(tg, a)]];
+      // The edge seen from g is the edge seen from f turned back by the seam's turn.
+      const glm::dvec2 expected = quarter_turned(in_f, -2 * layout.turn[f][k]);
+      EXPECT_NEAR(glm::length(in_g - expected), 0.0, 1e-6 * glm::length(in_f));
+    }
+  EXPECT_GT(seams, 0);
+}
+
+// Plane position of every base vertex of a patch (the first copy where it is slit).
+std::map<int32_t, glm::dvec2> plane_of(const SurfacePatch& patch) {
+  std::map<int32_t, glm::dvec2> result;
+  for (size_t k = 0; k < patch.vertices.size(); ++k) result.emplace(patch.vertices[k], patch.uv[k]);
+  return result;
+}
+
+TEST(SeamlessLayout, OverlappingWindowsDifferByASymmetryTurnAndATranslation) {
+  // The default job's base; split once by the layout (320 faces hold no four half cones).
+  const TriMesh sphere = test::icosphere(2);
+  const BaseSurface base(sphere);
+  std::vector<Vec3> target(sphere.num_faces(), Vec3(1.0, 0.0, 0.0));
+  const BaseLayout layout(base, 2, target, std::vector<double>(target.size(), default_field_weight(base)));
+  EXPECT_EQ(layout.levels(), 1);
+  EXPECT_EQ(layout.cones(), 4);
+  int compared = 0;
+  for (int32_t first = 0; first < 320; first += 23) {
+    const SurfacePatch a = grow_conformal_patch(base, {first, glm::dvec2(0.3)}, 0.5, nullptr, &layout);
+    const int32_t second = base.face_across[base.face_across[first][0]][1];
+    const SurfacePatch b = grow_conformal_patch(base, {second, glm::dvec2(0.2)}, 0.5, nullptr, &layout);
+    if (a.chart != PatchChart::layout_window || b.chart != PatchChart::layout_window) continue;
+    // Shared vertices that neither patch slit: b's plane = R a's plane + t, R a half turn or none.
+    std::vector<std::pair<glm::dvec2, glm::dvec2>> pairs;
+    const auto in_a = plane_of(a), in_b = plane_of(b);
+    const auto copies = [](const SurfacePatch& p, int32_t v) { return std::count(p.vertices.begin(), p.vertices.end(), v); };
+    for (const auto& [v, p] : in_a)
+      if (const auto it = in_b.find(v); it != in_b.end() && copies(a, v) == 1 && copies(b, v) == 1) pairs.emplace_back(p, it->second);
+    if (pairs.size() < 3) continue;
+    double best = std::numeric_limits<double>::max();
+    for (int quarter : {0, 2}) {
+      const glm::dvec2 t = pairs[0].second - quarter_turned(pairs[0].first, quarter);
+      double worst = 0.0;
+      for (const auto& [pa, pb] : pairs) worst = std::max(worst, glm::length(pb - quarter_turned(pa, quarter) - t));
+      best = std::min(best, worst);
+    }
+    EXPECT_LT(best, 1e-6) << "patches at faces " << first << " and " << second;
+    ++compared;
+  }
+  EXPECT_GE(compared, 5);
+}
+
+TEST(BaseLayout, SplitFacesKeepTheSurfaceAndNumberThePartsOfEachFace) {
+  const TriMesh sphere = test::icosphere(1);
+  const TriMesh split = split_faces(sphere, 2);
+  ASSERT_EQ(split.num_faces(), 16 * sphere.num_faces());
+  for (size_t v = 0; v < sphere.num_vertices(); ++v) EXPECT_EQ(split.positions[v], sphere.positions[v]);
+  for (size_t f = 0; f < sphere.num_faces(); ++f) {
+    const Tri& t = sphere.triangles[f];
+    const Vec3 normal = glm::cross(sphere.positions[t[1]] - sphere.positions[t[0]], sphere.positions[t[2]] - sphere.positions[t[0]]);
+    double area = 0.0;
+    for (size_t p = 16 * f; p < 16 * f + 16; ++p) {
+      const Tri& s = split.triangles[p];
+      const Vec3 n = glm::cross(split.positions[s[1]] - split.positions[s[0]], split.positions[s[2]] - split.positions[s[0]]);
+      EXPECT_GT(glm::dot(n, normal), 0.0);  // same orientation, in the parent's plane
+      area += glm::length(n);
+    }
+    EXPECT_NEAR(area, glm::length(normal), 1e-12);
+    // Corner c of the face is corner c of part c x 5 (the layout's windows rely on it).
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(split.triangles[16 * f + 5 * c][c], t[c]);
+  }
+}
+
+}  // namespace
+}  // namespace meshquilt
