@@ -76,10 +76,12 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
 //! direction each) and no layout the patch is flattened along the field (field_aligned_flattening,
 //! in base units) wherever that chart does not fold. With a `layout` the patch is a window of it where
 //! that unfolds without a cone or a fold, else flattened along its field (field_aligned_flattening,
-//! in base units) where that does not fold; LSCM is the last resort.
+//! in base units) where that does not fold; LSCM is the last resort. A layout window's
+//! area_distortion is the change of its area ratio across `footprint` (an element's size, base
+//! units; the radius when 0), not the spread over the whole window.
 //! \throw SolverError when the LSCM system cannot be solved.
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
                                   const std::vector<Vec3>* face_field = nullptr,
-                                  const BaseLayout* layout = nullptr);
+                                  const BaseLayout* layout = nullptr, double footprint = 0.0);
 
 }  // namespace meshquilt

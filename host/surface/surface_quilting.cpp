@@ -32,6 +32,15 @@ struct SurfaceElement {
   std::vector<Vec3> in_space;
 };
 
+// The median x-y diagonal of the swatch's elements, swatch units.
+double median_element_diagonal(const QuiltSwatch& swatch) {
+  std::vector<double> diagonals;
+  for (const Rect2& r : swatch.element_bounds) diagonals.push_back(glm::length(r.hi - r.lo));
+  if (diagonals.empty()) return glm::length(swatch.extent);
+  std::nth_element(diagonals.begin(), diagonals.begin() + diagonals.size() / 2, diagonals.end());
+  return diagonals[diagonals.size() / 2];
+}
+
 void update_bounds(SurfaceElement& e, const BaseSurface& base) {
   std::vector<Vec3> points;
   points.reserve(e.vertices.size());
@@ -97,6 +106,7 @@ class SurfaceDriver {
     // A patch must hold the footprint of any placement that covers the sub-patch: a disk of the
     // swatch's diagonal around the seed, plus a cell.
     full_radius_ = (glm::length(swatch_.extent) + cell_) * unit_;
+    footprint_ = median_element_diagonal(swatch_) * unit_;
     if (options.shared_layout) {
       layout_ = make_layout();
     } else {
@@ -178,7 +188,8 @@ class SurfaceDriver {
     const double max_distortion = options_.max_area_distortion * std::ldexp(1.0, holes_.tries(seed_cell));
     SurfacePatch patch;
     for (int attempt = 0;; ++attempt) {
-      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get());
+      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get(),
+                                   footprint_);
       const bool good = patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
       if (good || attempt >= options_.max_shrinks) break;
       shrink *= 0.75;
@@ -445,6 +456,7 @@ class SurfaceDriver {
   HoleTracker holes_;
   std::mt19937_64 rng_;
   double shell_ = 0.0, height_unit_ = 0.0, full_radius_ = 0.0;
+  double footprint_ = 0.0;  // an element's size on the base: what a layout window's distortion is measured over
   int sub_nx_ = 1, sub_ny_ = 1;
   double total_area_ = 0.0, processed_area_ = 0.0;
   std::unique_ptr<SurfaceEmbedding> embedding_;
