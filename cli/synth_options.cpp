@@ -18,10 +18,10 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
   cmd->add_option("--scale", args.scale, "with --base: swatch's longer side / base's bounding-box diagonal")
       ->capture_default_str();
   cmd->add_option("--field", args.field, "with --base: guidance field file (JSON directions at vertices or points)");
-  cmd->add_flag("--shared-layout", args.shared_layout,
-               "with --base: every patch a window of one seamless field-aligned layout of the base");
+  cmd->add_flag("!--per-patch-charts", args.shared_layout,
+                "with --base: flatten each patch alone instead of as a window of one field-aligned layout of the base");
   cmd->add_option("--symmetry", args.symmetry,
-                  "with --shared-layout: n of its direction field, 1, 2 or 4 (0: the swatch's rotational symmetry)")
+                  "with --base: n of the layout's direction field, 1, 2 or 4 (0: the swatch's rotational symmetry)")
       ->capture_default_str();
   cmd->add_option("--shell-height", args.shell_height,
                   "with --base: layer height in base units (default: the swatch's thickness at --scale)");

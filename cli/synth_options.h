@@ -26,7 +26,7 @@ struct SynthArgs {
   std::string base;                 //!< base mesh; empty: a plane (--plane)
   double scale = 0.1;               //!< swatch's longer side / base's bounding-box diagonal
   std::string field;                //!< guidance field file (JSON); empty: the default field
-  bool shared_layout = false;       //!< patches are windows of one layout of the base
+  bool shared_layout = true;        //!< patches are windows of one layout of the base
   int symmetry = 0;                 //!< n of the layout's field; 0: the swatch's symmetry
   double shell_height = 0.0;        //!< layer height in base units; 0: the swatch's thickness at scale
   std::string write_field;          //!< write the field used as OBJ line segments

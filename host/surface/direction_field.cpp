@@ -53,6 +53,11 @@ double default_field_weight(const BaseSurface& base) {
   return 1e-4 / static_cast<double>(std::max<size_t>(base.mesh.num_faces(), 1));
 }
 
+double guided_field_weight(const BaseSurface& base) {
+  // Ten times that eigenvalue: the field keeps the target's directions, smoothed.
+  return 10.0 / static_cast<double>(std::max<size_t>(base.mesh.num_faces(), 1));
+}
+
 DirectionField smoothest_direction_field(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target,
                                          const std::vector<double>& weight) {
   const TriMesh& mesh = base.mesh;

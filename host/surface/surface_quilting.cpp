@@ -32,13 +32,14 @@ struct SurfaceElement {
   std::vector<Vec3> in_space;
 };
 
-// The median x-y diagonal of the swatch's elements, swatch units.
-double median_element_diagonal(const QuiltSwatch& swatch) {
-  std::vector<double> diagonals;
-  for (const Rect2& r : swatch.element_bounds) diagonals.push_back(glm::length(r.hi - r.lo));
-  if (diagonals.empty()) return glm::length(swatch.extent);
-  std::nth_element(diagonals.begin(), diagonals.begin() + diagonals.size() / 2, diagonals.end());
-  return diagonals[diagonals.size() / 2];
+// The median width of the swatch's elements (the shorter side of their x-y bounds), swatch
+// units: a ring's size, a yarn's thickness, never its length, which a patch holds whole anyway.
+double median_element_width(const QuiltSwatch& swatch) {
+  std::vector<double> widths;
+  for (const Rect2& r : swatch.element_bounds) widths.push_back(std::min(r.hi.x - r.lo.x, r.hi.y - r.lo.y));
+  if (widths.empty()) return std::min(swatch.extent.x, swatch.extent.y);
+  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+  return widths[widths.size() / 2];
 }
 
 void update_bounds(SurfaceElement& e, const BaseSurface& base) {
@@ -106,7 +107,7 @@ class SurfaceDriver {
     // A patch must hold the footprint of any placement that covers the sub-patch: a disk of the
     // swatch's diagonal around the seed, plus a cell.
     full_radius_ = (glm::length(swatch_.extent) + cell_) * unit_;
-    footprint_ = median_element_diagonal(swatch_) * unit_;
+    footprint_ = median_element_width(swatch_) * unit_;
     if (options.shared_layout) {
       layout_ = make_layout();
     } else {
@@ -124,7 +125,9 @@ class SurfaceDriver {
     const size_t faces = base_.mesh.num_faces();
     std::vector<Vec3> target(faces);
     for (size_t f = 0; f < faces; ++f) target[f] = field_.at(base_, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)});
-    std::vector<double> weight(faces, default_field_weight(base_));
+    // A field the user drew is followed everywhere; the default one only breaks the smoothest
+    // field's rotational freedom.
+    std::vector<double> weight(faces, field_.held_vertices.empty() ? default_field_weight(base_) : guided_field_weight(base_));
     for (int32_t v : field_.held_vertices)
       for (int32_t f : base_.vertex_faces[v]) weight[f] = 10.0;
     auto layout = std::make_unique<BaseLayout>(base_, n, target, weight);

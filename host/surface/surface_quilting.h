@@ -33,7 +33,7 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! Patches are windows of one layout of the base that follows the smoothest n-direction field
   //! holding the guidance field's given directions (surface/base_layout.h, docs/decisions/0033);
   //! off: each patch is flattened alone along the guidance field (docs/decisions/0032).
-  bool shared_layout = false;
+  bool shared_layout = true;
   //! n of that field: 1, 2 or 4; 0 takes the swatch's rotational symmetry (quilt/swatch_symmetry.h).
   int symmetry = 0;
   //! Places local coordinates in space; empty: displacement along vertex normals.

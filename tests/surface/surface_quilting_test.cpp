@@ -241,9 +241,9 @@ TEST(SurfaceQuilting, NoElementsIntersectWhereSynthesisDecidesInOutputSpace) {
 TEST(SurfaceQuilting, HalvingTheScaleQuadruplesTheElements) {
   const TriMesh swatch = make_chainmail(ChainmailOptions::small());
   const TriMesh sphere = read_mesh(kSource / "data/sphere.off");
-  // At coarser scales a larger share of rings is lost at patch edges (about 50% of a perfect
-  // lattice's count at 0.2, 60% at 0.1), so the ratio runs above 4: 4.84 (299 -> 1,448) with the
-  // pattern-search refinement, 5.14 (284 -> 1,461) with the present one.
+  // At coarser scales a larger share of rings is lost at patch edges, so the ratio runs above 4:
+  // 5.14 (284 -> 1,461) with per-patch charts, 5.77 (599 -> 3,454) with the shared layout, which
+  // keeps twice the rings at both scales but loses more of the coarse ones round its four cones.
   const SurfaceRun coarse = run_surface(sphere, swatch, 0.2);
   const SurfaceRun fine = run_surface(sphere, swatch, 0.1);
   int32_t coarse_elements = 0, fine_elements = 0;
@@ -252,7 +252,7 @@ TEST(SurfaceQuilting, HalvingTheScaleQuadruplesTheElements) {
   const double ratio = static_cast<double>(fine_elements) / coarse_elements;
   std::printf("halving the scale: %d -> %d elements (%.2fx)\n", coarse_elements, fine_elements, ratio);
   EXPECT_GT(ratio, 3.5) << coarse_elements << " -> " << fine_elements;
-  EXPECT_LT(ratio, 5.5) << coarse_elements << " -> " << fine_elements;
+  EXPECT_LT(ratio, 6.0) << coarse_elements << " -> " << fine_elements;
 }
 
 TEST(SurfaceQuilting, BackEndsAgree) {
@@ -285,11 +285,16 @@ TEST(SurfaceQuilting, BackEndsAgree) {
 // A patch that must shrink below the yarns' length to meet the distortion limit places none of
 // them, and seeding the same cell again would fail alike: each retry allows twice the distortion.
 // With a limit of 1.05 (every first patch on the sphere shrinks as far as it may) the retries
-// at 2.1 and 4.2 leave 0.3% of the sphere in holes; without the rule, 2.2%.
+// at 2.1 and 4.2 leave 0.3% of the sphere in holes; without the rule, 2.2%. Per-patch charts:
+// their distortion is the spread over the whole patch, which such a limit trips everywhere.
 TEST(SurfaceQuilting, RetriesAllowMoreDistortionWhereAShrunkPatchPlacedNothing) {
   const TriMesh swatch = make_weave(WeaveOptions::small());
-  const SurfaceRun run = run_surface(read_mesh(kSource / "data/sphere.off"), swatch, 0.3, engine::BackendChoice::cpu, 0,
-                                     {}, Embed::shell, [](SurfaceQuiltOptions& o) { o.max_area_distortion = 1.05; });
+  const SurfaceRun run =
+      run_surface(read_mesh(kSource / "data/sphere.off"), swatch, 0.3, engine::BackendChoice::cpu, 0, {}, Embed::shell,
+                  [](SurfaceQuiltOptions& o) {
+                    o.max_area_distortion = 1.05;
+                    o.shared_layout = false;
+                  });
   std::printf("sphere + weave, distortion limit 1.05: %d patches, %d shrunk, %d holes\n", run.stats.patches,
               run.stats.shrunk_patches, run.stats.holes);
   EXPECT_GT(run.stats.shrunk_patches, run.stats.patches / 3);
