@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "mesh/topology.h"
+#include "surface/cone_metric_field.h"
 
 namespace meshquilt {
 namespace {
@@ -37,7 +38,7 @@ TriMesh split_faces(const TriMesh& mesh, int levels) {
 }
 
 BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target,
-                       const std::vector<double>& weight)
+                       const std::vector<double>& weight, bool drawn)
     : base_(base) {
   size_t faces = base.mesh.num_faces();
   while (faces > 0 && faces < kLayoutFaces && levels_ < 3) {
@@ -53,7 +54,13 @@ BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<
     fine_target[f] = target[f / parts];
     fine_weight[f] = weight[f / parts];
   }
-  layout_ = seamless_layout(*fine_, smoothest_direction_field(*fine_, symmetry, fine_target, fine_weight));
+  DirectionField field = smoothest_direction_field(*fine_, symmetry, fine_target, fine_weight);
+  // Where no one drew a field, the cones that flatten the base more evenly.
+  if (!drawn) {
+    const std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0]);
+    if (placed && *field_scale_spread(*fine_, *placed) < *field_scale_spread(*fine_, field)) field = *placed;
+  }
+  layout_ = seamless_layout(*fine_, field);
 }
 
 LayoutWindow BaseLayout::unfold(const std::vector<int32_t>& faces, int32_t start, const std::vector<int32_t>& corner_vertex,

@@ -1,6 +1,8 @@
 #pragma once
 //! The shared layout of a base as the surface driver uses it: the smoothest n-direction field
-//! holding the guidance field's given directions, and the seamless layout that follows it
+//! holding the guidance field's given directions (where none were drawn on a closed genus-0
+//! base, the cone metric's field when its scale spreads less: cone_metric_field.h), and the
+//! seamless layout that follows it
 //! (seamless_layout.h), computed over the base split 1-to-4 where it is coarse. A field's cones
 //! need room: on the 320 faces of `data/sphere.off` the smoothest line field has two index-1
 //! singularities, around which no layout opens without folding; split once, four of index 1/2.
@@ -15,9 +17,11 @@ namespace meshquilt {
 
 class BaseLayout {
  public:
-  //! target, weight: per base face, as smoothest_direction_field takes them.
+  //! target, weight: per base face, as smoothest_direction_field takes them; drawn: the user
+  //! gave directions, which the field must follow.
   //! \throw SolverError when a solve fails.
-  BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight);
+  BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight,
+             bool drawn = false);
   BaseLayout(const BaseLayout&) = delete;
   BaseLayout& operator=(const BaseLayout&) = delete;
 

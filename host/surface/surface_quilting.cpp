@@ -130,7 +130,7 @@ class SurfaceDriver {
     std::vector<double> weight(faces, field_.held_vertices.empty() ? default_field_weight(base_) : guided_field_weight(base_));
     for (int32_t v : field_.held_vertices)
       for (int32_t f : base_.vertex_faces[v]) weight[f] = 10.0;
-    auto layout = std::make_unique<BaseLayout>(base_, n, target, weight);
+    auto layout = std::make_unique<BaseLayout>(base_, n, target, weight, !field_.held_vertices.empty());
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();
     return layout;

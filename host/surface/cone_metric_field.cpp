@@ -1,0 +1,197 @@
+#include "surface/cone_metric_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+#include <Eigen/Sparse>
+#include <glm/geometric.hpp>
+
+#include "numerics/sparse_solve.h"
+
+namespace meshquilt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double corner_angle(const TriMesh& mesh, const Tri& t, int k) {
+  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
+  const Vec3 b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
+  const double la = glm::length(a), lb = glm::length(b);
+  if (la <= 0.0 || lb <= 0.0) return 0.0;
+  return std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
+}
+
+// Half the cotangent of corner k: the weight of the edge opposite it. Slivers are capped.
+double half_cotangent(const TriMesh& mesh, const Tri& t, int k) {
+  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
+  const Vec3 b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
+  const double sine = glm::length(glm::cross(a, b));
+  return sine > 0.0 ? 0.5 * std::clamp(glm::dot(a, b) / sine, -1e3, 1e3) : 0.0;
+}
+
+std::vector<double> angle_defects(const TriMesh& mesh) {
+  std::vector<double> defect(mesh.num_vertices(), 2.0 * kPi);
+  for (const Tri& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) defect[t[k]] -= corner_angle(mesh, t, k);
+  return defect;
+}
+
+// One closed component of genus 0: every edge has a face across it, all faces reach each other,
+// and V - E + F = 2.
+bool closed_sphere(const BaseSurface& base) {
+  const TriMesh& mesh = base.mesh;
+  if (mesh.num_faces() == 0) return false;
+  for (const auto& across : base.face_across)
+    for (int32_t g : across)
+      if (g < 0) return false;
+  std::vector<uint8_t> reached(mesh.num_faces(), 0);
+  std::deque<int32_t> queue{0};
+  reached[0] = 1;
+  size_t count = 1;
+  while (!queue.empty()) {
+    const int32_t f = queue.front();
+    queue.pop_front();
+    for (int32_t g : base.face_across[f])
+      if (!reached[g]) {
+        reached[g] = 1;
+        ++count;
+        queue.push_back(g);
+      }
+  }
+  if (count != mesh.num_faces()) return false;
+  size_t used = 0;
+  for (const auto& faces : base.vertex_faces) used += faces.empty() ? 0 : 1;
+  const long euler = static_cast<long>(used) - static_cast<long>(3 * mesh.num_faces() / 2) +
+                     static_cast<long>(mesh.num_faces());
+  return euler == 2;
+}
+
+}  // namespace
+
+std::vector<double> cone_metric_scale(const BaseSurface& base, const std::vector<double>& target_curvature) {
+  const TriMesh& mesh = base.mesh;
+  const auto n = static_cast<Eigen::Index>(mesh.num_vertices());
+  const std::vector<double> defect = angle_defects(mesh);
+  Eigen::MatrixXd rhs(n, 1);
+  for (Eigen::Index v = 0; v < n; ++v) rhs(v, 0) = target_curvature[v] - defect[v];
+  std::vector<Eigen::Triplet<double>> triplets;
+  double largest = 0.0;
+  for (const Tri& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const double w = half_cotangent(mesh, t, k);
+      const int32_t i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+      triplets.emplace_back(i, i, w);
+      triplets.emplace_back(j, j, w);
+      triplets.emplace_back(i, j, -w);
+      triplets.emplace_back(j, i, -w);
+      largest = std::max(largest, std::abs(w));
+    }
+  // phi is defined up to a constant: a faint pull to 0 picks the one of mean 0.
+  for (Eigen::Index v = 0; v < n; ++v) triplets.emplace_back(v, v, 1e-9 * std::max(largest, 1e-300));
+  Eigen::SparseMatrix<double> L(n, n);
+  L.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::MatrixXd phi = solve_positive_definite(L, rhs, "cone metric");
+  std::vector<double> result(static_cast<size_t>(n));
+  double mean = 0.0;
+  for (Eigen::Index v = 0; v < n; ++v) mean += (result[v] = phi(v, 0)) / static_cast<double>(n);
+  for (double& x : result) x -= mean;
+  return result;
+}
+
+double scale_spread(const BaseSurface& base, const std::vector<double>& phi) {
+  const TriMesh& mesh = base.mesh;
+  std::vector<std::pair<double, double>> scales;  // (phi, vertex area)
+  double total = 0.0;
+  std::vector<double> area(mesh.num_vertices(), 0.0);
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int32_t v : mesh.triangles[f]) area[v] += base.face_areas[f] / 3.0;
+  for (size_t v = 0; v < phi.size(); ++v) {
+    scales.emplace_back(phi[v], area[v]);
+    total += area[v];
+  }
+  if (scales.empty() || !(total > 0.0)) return 1.0;
+  std::sort(scales.begin(), scales.end());
+  const auto quantile = [&](double q) {
+    double below = 0.0;
+    for (const auto& [value, weight] : scales)
+      if ((below += weight) >= q * total) return value;
+    return scales.back().first;
+  };
+  return std::exp(quantile(0.9) - quantile(0.1));
+}
+
+std::optional<double> field_scale_spread(const BaseSurface& base, const DirectionField& field) {
+  if (!closed_sphere(base)) return std::nullopt;
+  const std::vector<int> index = field_indices(base, field);
+  std::vector<double> curvature(index.size());
+  for (size_t v = 0; v < index.size(); ++v) curvature[v] = index[v] * 2.0 * kPi / field.symmetry;
+  return scale_spread(base, cone_metric_scale(base, curvature));
+}
+
+std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction) {
+  if (!closed_sphere(base)) return std::nullopt;
+  const TriMesh& mesh = base.mesh;
+  const size_t vertices = mesh.num_vertices();
+  std::vector<double> vertex_area(vertices, 0.0);
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int32_t v : mesh.triangles[f]) vertex_area[v] += base.face_areas[f] / 3.0;
+  const double deficit = 2.0 * kPi / symmetry;  // of one cone of index 1 / n
+  const int count = 2 * symmetry;                // their deficits sum to 2 pi x 2
+  // The curvature asked for: the cones', and what is left spread by area.
+  const auto target = [&](const std::vector<int32_t>& cones) {
+    const double left = 4.0 * kPi - deficit * static_cast<double>(cones.size());
+    std::vector<double> k(vertices);
+    for (size_t v = 0; v < vertices; ++v) k[v] = left * vertex_area[v] / base.area;
+    for (int32_t c : cones) k[c] += deficit;
+    return k;
+  };
+  const auto lowest = [&](const std::vector<double>& phi, const std::vector<int32_t>& taken) {
+    int32_t best = -1;
+    for (size_t v = 0; v < vertices; ++v) {
+      if (base.vertex_faces[v].empty() || std::find(taken.begin(), taken.end(), static_cast<int32_t>(v)) != taken.end())
+        continue;
+      if (best < 0 || phi[v] < phi[best]) best = static_cast<int32_t>(v);
+    }
+    return best;
+  };
+  std::vector<int32_t> cones;
+  while (static_cast<int>(cones.size()) < count) cones.push_back(lowest(cone_metric_scale(base, target(cones)), cones));
+  const std::vector<double> phi = cone_metric_scale(base, target(cones));
+
+  // Parallel transport in the scaled metric: the surface's own across each edge, turned by the
+  // metric's rotation, minus the cotan-weighted change of phi along the edge.
+  DirectionField field;
+  field.symmetry = symmetry;
+  field.directions.assign(mesh.num_faces(), Vec3(0.0));
+  std::vector<uint8_t> reached(mesh.num_faces(), 0);
+  const Vec3 n0 = base.face_normals[0];
+  Vec3 d = root_direction - glm::dot(root_direction, n0) * n0;
+  if (!(glm::length(d) > 1e-12)) d = mesh.positions[mesh.triangles[0][1]] - mesh.positions[mesh.triangles[0][0]];
+  field.directions[0] = glm::normalize(d);
+  reached[0] = 1;
+  std::deque<int32_t> queue{0};
+  while (!queue.empty()) {
+    const int32_t f = queue.front();
+    queue.pop_front();
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (reached[g]) continue;
+      reached[g] = 1;
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      const Tri& tg = mesh.triangles[g];
+      const int kg = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;  // g's edge (b, a) and its opposite corner
+      const double w = half_cotangent(mesh, t, (k + 2) % 3) + half_cotangent(mesh, tg, (kg + 2) % 3);
+      const double turn = w * (phi[b] - phi[a]);
+      const Vec3 carried = transport_across(base, f, g, a, b, field.directions[f]);
+      const Vec3 n = base.face_normals[g];
+      field.directions[g] = glm::normalize(std::cos(turn) * carried + std::sin(turn) * glm::cross(n, carried));
+      queue.push_back(g);
+    }
+  }
+  return field;
+}
+
+}  // namespace meshquilt

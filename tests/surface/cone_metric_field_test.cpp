@@ -1,0 +1,115 @@
+// The cone metric and its field: closed-form cases (a metric that asks for the surface's own
+// curvature changes nothing), the field's singularities against its cones, and bases it refuses.
+#include "surface/cone_metric_field.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "support/surface_fixtures.h"
+
+namespace meshquilt {
+namespace {
+
+// A torus of `around` x `tube` quads, each split in two.
+TriMesh torus(int around, int tube, double major = 1.0, double minor = 0.4) {
+  TriMesh m;
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      const double u = 2.0 * std::numbers::pi * i / around, v = 2.0 * std::numbers::pi * j / tube;
+      m.positions.emplace_back((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
+                               minor * std::sin(v));
+    }
+  const auto at = [&](int i, int j) { return static_cast<int32_t>(((i + around) % around) * tube + (j + tube) % tube); };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < tube; ++j) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// 2 pi less the angles round each vertex, summed corner by corner.
+std::vector<double> defects(const TriMesh& m) {
+  std::vector<double> k(m.num_vertices(), 2.0 * std::numbers::pi);
+  for (const Tri& t : m.triangles)
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 a = glm::normalize(m.positions[t[(c + 1) % 3]] - m.positions[t[c]]);
+      const Vec3 b = glm::normalize(m.positions[t[(c + 2) % 3]] - m.positions[t[c]]);
+      k[t[c]] -= std::acos(glm::dot(a, b));
+    }
+  return k;
+}
+
+TEST(ConeMetric, AskingForTheSurfacesOwnCurvatureScalesNothing) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  for (double phi : cone_metric_scale(base, defects(sphere))) EXPECT_NEAR(phi, 0.0, 1e-6);
+}
+
+TEST(ConeMetric, ACurvatureMovedToOneVertexGrowsLengthsThere) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  std::vector<double> k = defects(sphere);
+  // Half of vertex 1's curvature moved onto vertex 0: lengths round 0 grow, round 1 shrink.
+  k[0] += 0.5 * k[1];
+  k[1] *= 0.5;
+  const std::vector<double> phi = cone_metric_scale(base, k);
+  for (size_t v = 2; v < phi.size(); ++v) {
+    EXPECT_GT(phi[0], phi[v]);
+    EXPECT_LT(phi[1], phi[v]);
+  }
+}
+
+TEST(ConeMetricField, ItsSingularitiesAreItsConesOnASphere) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  for (int n : {1, 2, 4}) {
+    const auto field = cone_metric_field(base, n, Vec3(1.0, 0.0, 0.0));
+    ASSERT_TRUE(field) << "n = " << n;
+    int cones = 0;
+    for (int index : field_indices(base, *field)) {
+      EXPECT_TRUE(index == 0 || index == 1) << "n = " << n << ": index " << index;
+      cones += index;
+    }
+    EXPECT_EQ(cones, 2 * n) << "n = " << n;
+  }
+}
+
+TEST(ConeMetricField, SpreadsScaleLessThanTheSmoothestFieldPulledToAnAxis) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  // The axis projection's poles pair the smoothest line field's four cones there.
+  std::vector<Vec3> target(sphere.num_faces());
+  for (size_t f = 0; f < target.size(); ++f) {
+    const Tri& t = sphere.triangles[f];
+    const Vec3 c = (sphere.positions[t[0]] + sphere.positions[t[1]] + sphere.positions[t[2]]) / 3.0;
+    target[f] = glm::cross(Vec3(0.0, 0.0, 1.0), c);
+  }
+  const DirectionField paired =
+      smoothest_direction_field(base, 2, target, std::vector<double>(target.size(), default_field_weight(base)));
+  const auto placed = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0));
+  ASSERT_TRUE(placed);
+  const double paired_spread = *field_scale_spread(base, paired), placed_spread = *field_scale_spread(base, *placed);
+  std::printf("scale spread p90 / p10: smoothest %.3f, cones placed %.3f\n", paired_spread, placed_spread);
+  EXPECT_LT(placed_spread, 0.85 * paired_spread);
+}
+
+TEST(ConeMetricField, RefusesBasesThatAreNotOneClosedSphere) {
+  const TriMesh ring = torus(24, 12);
+  EXPECT_FALSE(cone_metric_field(BaseSurface(ring), 2, Vec3(1.0, 0.0, 0.0)));
+  const TriMesh grid = test::flat_grid(6, 6, 0.1);
+  EXPECT_FALSE(cone_metric_field(BaseSurface(grid), 2, Vec3(1.0, 0.0, 0.0)));
+  TriMesh two = test::icosphere(1);
+  const TriMesh other = test::icosphere(1, 0.5);
+  const auto offset = static_cast<int32_t>(two.positions.size());
+  for (const Vec3& p : other.positions) two.positions.push_back(p + Vec3(3.0, 0.0, 0.0));
+  for (const Tri& t : other.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  EXPECT_FALSE(cone_metric_field(BaseSurface(two), 2, Vec3(1.0, 0.0, 0.0)));
+}
+
+}  // namespace
+}  // namespace meshquilt
