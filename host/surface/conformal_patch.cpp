@@ -310,46 +310,6 @@ void measure_distortion(const BaseSurface& base, SurfacePatch& patch, double sca
   patch.area_distortion = hi > 0.0 && lo < std::numeric_limits<double>::max() ? hi / lo : 1.0;
 }
 
-// How much plane area / base area changes across one element's footprint, where the layout's
-// scale varies slowly: the log of the ratio over each vertex's ring of faces, its gradient per
-// face, and the area-weighted 95th percentile of exp(|gradient| x footprint). The scale spread
-// over a whole window is shared with every neighbouring window and shrinking cannot mend it;
-// the worst triangle (a cone's ring, a sliver) would shrink nearly every window.
-double footprint_area_distortion(const BaseSurface& base, const SurfacePatch& patch, double footprint) {
-  const size_t n = patch.uv.size();
-  std::vector<double> plane(n, 0.0), area(n, 0.0);
-  for (size_t f = 0; f < patch.faces.size(); ++f) {
-    const int32_t* v = &patch.local_vertex_of_face_[3 * f];
-    const double plane_area = 0.5 * cross2(patch.uv[v[1]] - patch.uv[v[0]], patch.uv[v[2]] - patch.uv[v[0]]);
-    for (int k = 0; k < 3; ++k) {
-      plane[v[k]] += plane_area;
-      area[v[k]] += base.face_areas[patch.faces[f]];
-    }
-  }
-  std::vector<double> log_ratio(n, 0.0);
-  for (size_t v = 0; v < n; ++v)
-    if (area[v] > 0.0 && plane[v] > 0.0) log_ratio[v] = std::log(plane[v] / area[v]);
-  std::vector<std::pair<double, double>> spread;  // (distortion, base area)
-  double total = 0.0;
-  for (size_t f = 0; f < patch.faces.size(); ++f) {
-    const int32_t* v = &patch.local_vertex_of_face_[3 * f];
-    const glm::dvec2 e1 = patch.uv[v[1]] - patch.uv[v[0]], e2 = patch.uv[v[2]] - patch.uv[v[0]];
-    const double det = cross2(e1, e2);
-    const double weight = base.face_areas[patch.faces[f]];
-    if (!(det > 0.0) || weight <= 0.0) continue;
-    const double d1 = log_ratio[v[1]] - log_ratio[v[0]], d2 = log_ratio[v[2]] - log_ratio[v[0]];
-    const glm::dvec2 gradient = glm::dvec2(d1 * e2.y - d2 * e1.y, d2 * e1.x - d1 * e2.x) / det;
-    spread.emplace_back(std::exp(glm::length(gradient) * footprint), weight);
-    total += weight;
-  }
-  if (spread.empty()) return 1.0;
-  std::sort(spread.begin(), spread.end());
-  double below = 0.0;
-  for (const auto& [distortion, weight] : spread)
-    if ((below += weight) >= 0.95 * total) return distortion;
-  return spread.back().first;
-}
-
 // Plane positions from a window's corners; corners of one vertex that unfold to different places
 // (round a cone of the layout) become separate vertices, so the patch is slit there.
 void slit_open(SurfacePatch& patch, const std::vector<glm::dvec2>& corner_uv, double tolerance) {
@@ -404,7 +364,7 @@ SurfacePatch& centred(SurfacePatch& patch, const SurfacePoint& seed) {
 }  // namespace
 
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
-                                  const std::vector<Vec3>* face_field, const BaseLayout* layout, double footprint) {
+                                  const std::vector<Vec3>* face_field, const BaseLayout* layout) {
   const TriMesh& mesh = base.mesh;
   SurfacePatch patch;
   patch.radius = radius;
@@ -462,24 +422,30 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
     measure_distortion(base, slit, 1.0);
     // The layout may fold a face or two round a cone: the window leaves them out (a point over
     // them goes to the nearest face) rather than give up the shared layout for the whole patch.
-    if (slit.flipped_faces > 0 && slit.flipped_faces <= std::max<int>(1, static_cast<int>(faces.size()) / 50)) {
-      std::vector<int32_t> unfolded;
-      for (size_t k = 0; k < faces.size(); ++k) {
+    // Unfolded without them, the window may reach round the cone the other way and fold another.
+    const int most = std::max<int>(1, static_cast<int>(faces.size()) / 50);
+    std::vector<int32_t> unfolded = faces;
+    for (int round = 0; round < 3 && slit.flipped_faces > 0 && slit.flipped_faces <= most; ++round) {
+      std::vector<int32_t> kept_faces;
+      for (size_t k = 0; k < unfolded.size(); ++k) {
         const int32_t* v = &slit.local_vertex_of_face_[3 * k];
-        if (faces[k] == seed.face || cross2(slit.uv[v[1]] - slit.uv[v[0]], slit.uv[v[2]] - slit.uv[v[0]]) > 0.0)
-          unfolded.push_back(faces[k]);
+        if (unfolded[k] == seed.face || cross2(slit.uv[v[1]] - slit.uv[v[0]], slit.uv[v[2]] - slit.uv[v[0]]) > 0.0)
+          kept_faces.push_back(unfolded[k]);
       }
+      unfolded = std::move(kept_faces);
       SurfacePatch kept;
       kept.radius = radius;
       set_faces(mesh, kept, unfolded);
-      const LayoutWindow again = layout->unfold(unfolded, seed.face, kept.local_vertex_of_face_,
-                                                static_cast<int32_t>(kept.vertices.size()));
+      const LayoutWindow again =
+          layout->unfold(unfolded, seed.face, kept.local_vertex_of_face_, static_cast<int32_t>(kept.vertices.size()));
       slit_open(kept, again.corner_uv, 1e-6 * radius);
       measure_distortion(base, kept, 1.0);
-      if (kept.flipped_faces == 0) slit = std::move(kept);
+      slit = std::move(kept);
     }
     if (slit.flipped_faces == 0) {
-      slit.area_distortion = footprint_area_distortion(base, slit, footprint > 0.0 ? footprint : radius);
+      // The layout's scale changes over a window as it does over every window round it: a
+      // smaller window would change nothing.
+      slit.area_distortion = 1.0;
       slit.chart = PatchChart::layout_window;
       return centred(slit, seed);
     }

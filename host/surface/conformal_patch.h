@@ -77,11 +77,10 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
 //! in base units) wherever that chart does not fold. With a `layout` the patch is a window of it where
 //! that unfolds without a cone or a fold, else flattened along its field (field_aligned_flattening,
 //! in base units) where that does not fold; LSCM is the last resort. A layout window's
-//! area_distortion is the change of its area ratio across `footprint` (an element's size, base
-//! units; the radius when 0), not the spread over the whole window.
+//! area_distortion is 1: its scale is the shared layout's, which no smaller window changes.
 //! \throw SolverError when the LSCM system cannot be solved.
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
                                   const std::vector<Vec3>* face_field = nullptr,
-                                  const BaseLayout* layout = nullptr, double footprint = 0.0);
+                                  const BaseLayout* layout = nullptr);
 
 }  // namespace meshquilt

@@ -32,16 +32,6 @@ struct SurfaceElement {
   std::vector<Vec3> in_space;
 };
 
-// The median width of the swatch's elements (the shorter side of their x-y bounds), swatch
-// units: a ring's size, a yarn's thickness, never its length, which a patch holds whole anyway.
-double median_element_width(const QuiltSwatch& swatch) {
-  std::vector<double> widths;
-  for (const Rect2& r : swatch.element_bounds) widths.push_back(std::min(r.hi.x - r.lo.x, r.hi.y - r.lo.y));
-  if (widths.empty()) return std::min(swatch.extent.x, swatch.extent.y);
-  std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
-  return widths[widths.size() / 2];
-}
-
 void update_bounds(SurfaceElement& e, const BaseSurface& base) {
   std::vector<Vec3> points;
   points.reserve(e.vertices.size());
@@ -107,7 +97,6 @@ class SurfaceDriver {
     // A patch must hold the footprint of any placement that covers the sub-patch: a disk of the
     // swatch's diagonal around the seed, plus a cell.
     full_radius_ = (glm::length(swatch_.extent) + cell_) * unit_;
-    footprint_ = median_element_width(swatch_) * unit_;
     if (options.shared_layout) {
       layout_ = make_layout();
     } else {
@@ -191,8 +180,7 @@ class SurfaceDriver {
     const double max_distortion = options_.max_area_distortion * std::ldexp(1.0, holes_.tries(seed_cell));
     SurfacePatch patch;
     for (int attempt = 0;; ++attempt) {
-      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get(),
-                                   footprint_);
+      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get());
       const bool good = patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
       if (good || attempt >= options_.max_shrinks) break;
       shrink *= 0.75;
@@ -459,7 +447,6 @@ class SurfaceDriver {
   HoleTracker holes_;
   std::mt19937_64 rng_;
   double shell_ = 0.0, height_unit_ = 0.0, full_radius_ = 0.0;
-  double footprint_ = 0.0;  // an element's size on the base: what a layout window's distortion is measured over
   int sub_nx_ = 1, sub_ny_ = 1;
   double total_area_ = 0.0, processed_area_ = 0.0;
   std::unique_ptr<SurfaceEmbedding> embedding_;
