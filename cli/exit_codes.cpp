@@ -20,6 +20,7 @@ int exit_code(ErrorKind kind) {
     case ErrorKind::batch_incomplete: return static_cast<int>(ExitCode::batch_incomplete);
     case ErrorKind::bad_texture: return static_cast<int>(ExitCode::bad_texture);
     case ErrorKind::base_mismatch: return static_cast<int>(ExitCode::base_mismatch);
+    case ErrorKind::swatch_unfit: return static_cast<int>(ExitCode::swatch_unfit);
   }
   return static_cast<int>(ExitCode::internal);
 }

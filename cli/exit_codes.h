@@ -26,6 +26,7 @@ enum class ExitCode : int {
   batch_incomplete = 13,  //!< a batch or report with jobs that failed or are not done
   bad_texture = 14,       //!< a texture-space file that is truncated, corrupt or inconsistent
   base_mismatch = 15,     //!< a base whose connectivity is not the one a texture was made over
+  swatch_unfit = 16,      //!< `swatch check` found open, cut or intersecting elements, or a thick layout
 };
 
 //! The exit code of an error kind.

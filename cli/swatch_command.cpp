@@ -1,15 +1,19 @@
-// `meshquilt swatch KIND [options] -o FILE`: writes one of the built-in swatches.
+// `meshquilt swatch KIND [options] -o FILE`: writes one of the built-in swatches;
+// `meshquilt swatch check FILE`: says whether a swatch from anywhere will quilt well.
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "commands.h"
 #include "core/error.h"
+#include "inspect/swatch_check.h"
 #include "mesh/mesh_io.h"
 #include "swatch/chainmail.h"
 #include "swatch/fruit.h"
@@ -215,10 +219,35 @@ void add_heightfield(CLI::App* parent, const std::shared_ptr<Common>& common) {
   });
 }
 
+// Prints one line per finding on stdout, then fails with swatch_unfit, as `batch --report` prints
+// its table and then fails: the findings are the output, the error line their summary.
+void add_check(CLI::App* parent) {
+  auto* cmd = parent->add_subcommand(
+      "check", "says whether a swatch file will quilt well: closed elements, none intersecting or cut by the "
+               "border, thin along z");
+  auto file = std::make_shared<std::filesystem::path>();
+  cmd->add_option("FILE", *file, "swatch mesh to check (.ply .obj .off .stl)")->required();
+  cmd->callback([file] {
+    const std::string name = file->string();
+    const SwatchCheck check = check_swatch(read_mesh(*file), name);
+    for (const std::string& finding : check.findings) std::cout << name << ": " << finding << "\n";
+    if (!check.findings.empty()) {
+      std::cout.flush();
+      throw Error(ErrorKind::swatch_unfit, name + ": will not quilt well (" + std::to_string(check.findings.size()) +
+                                               (check.findings.size() == 1 ? " problem)" : " problems)"));
+    }
+    std::ostringstream ratio;
+    ratio << std::fixed << std::setprecision(2) << check.thickness_ratio;
+    std::cout << name << ": fine: " << check.elements << (check.elements == 1 ? " closed element" : " closed elements")
+              << ", thickness " << ratio.str()
+              << " x the shorter x-y side\n";
+  });
+}
+
 }  // namespace
 
 void add_swatch_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("swatch", "writes a built-in swatch: chainmail, weave, wire, fruit, nuts or heightfield");
+  auto* cmd = app.add_subcommand("swatch", "writes a built-in swatch (chainmail, weave, wire, fruit, nuts, heightfield) or checks one (check)");
   cmd->require_subcommand(1);
   auto common = std::make_shared<Common>();
   add_chainmail(cmd, common);
@@ -227,6 +256,7 @@ void add_swatch_command(CLI::App& app) {
   add_fruit(cmd, common);
   add_nuts(cmd, common);
   add_heightfield(cmd, common);
+  add_check(cmd);
 }
 
 }  // namespace meshquilt::cli

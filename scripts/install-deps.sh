@@ -12,6 +12,11 @@ packages=(
   clang-14 libclang-rt-14-dev
   slurm-wlm munge
 )
+# With --tests, what only the tests need: tests/foreign/make_swatches.py builds foreign swatches
+# with numpy (the build and every job run without it).
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(python3-numpy)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -27,6 +27,7 @@ enum class ErrorKind {
   batch_incomplete,  //!< a batch or report with jobs that failed or are not done
   bad_texture,       //!< a texture-space file that is truncated, corrupt or inconsistent
   base_mismatch,     //!< a base whose connectivity is not the one a texture was made over
+  swatch_unfit,      //!< `swatch check` found a swatch that will not quilt well
 };
 
 //! Base of every meshquilt error; carries its kind. Its text may name parameters as {name}, as
