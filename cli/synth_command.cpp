@@ -75,6 +75,7 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
       {"refused_pinned", stats.merges.refused_pinned},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
+      {"cut_swatch_elements", stats.cut_swatch_elements},
       {"dropped_intersecting", stats.dropped_intersecting},
       {"joined_elements", stats.joined_elements},
       {"cells", stats.cells},
@@ -298,6 +299,9 @@ void run_synth(const SynthArgs& args) {
   summary["seed"] = args.seed;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   progress.finish(summary.dump());
+  if (const int cut = summary["cut_swatch_elements"].get<int>(); cut > 0)
+    std::fprintf(stderr, "meshquilt: %s: left out %d element%s cut open by its border\n", swatch_name.c_str(), cut,
+                 cut == 1 ? "" : "s");
   if (progress_mode != ProgressMode::json)
     std::printf("wrote %s: %zu faces, %d elements (%d dropped) in %.1f s on %s\n", output.string().c_str(),
                 result.num_faces(), elements, summary["dropped_elements"].get<int>(), seconds, device->name().c_str());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <functional>
 #include <unordered_set>
@@ -229,12 +230,54 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
 
 }  // namespace
 
+namespace {
+
+// Elements cut open by the swatch's border: open, and reaching its x-y bounds (within 1e-3 of the
+// x-y diagonal, as `swatch check` counts them: a cut through faces leaves a ragged edge). Where some other
+// element is closed the swatch was cut from a larger sheet (a mail or a weave) and these are
+// left out; a swatch of open elements only (a relief sheet) keeps them.
+std::vector<TriMesh> without_cut_elements(std::vector<TriMesh> elements, int& cut) {
+  // The bounds of the faces: a file may hold vertices no face uses.
+  Rect2 bounds{glm::dvec2(std::numeric_limits<double>::max()), glm::dvec2(std::numeric_limits<double>::lowest())};
+  for (const TriMesh& e : elements) {
+    const Rect2 b = xy_bounds(e);
+    bounds.lo = glm::min(bounds.lo, b.lo);
+    bounds.hi = glm::max(bounds.hi, b.hi);
+  }
+  const double tolerance = 1e-3 * glm::length(bounds.hi - bounds.lo);
+  std::vector<uint8_t> is_cut(elements.size(), 0);
+  bool any_closed = false;
+  for (size_t k = 0; k < elements.size(); ++k) {
+    if (inspect_surface(elements[k]).closed_manifold()) {
+      any_closed = true;
+      continue;
+    }
+    const Rect2 b = xy_bounds(elements[k]);
+    is_cut[k] = b.lo.x <= bounds.lo.x + tolerance || b.lo.y <= bounds.lo.y + tolerance ||
+                b.hi.x >= bounds.hi.x - tolerance || b.hi.y >= bounds.hi.y - tolerance;
+  }
+  cut = 0;
+  if (!any_closed) return elements;
+  std::vector<TriMesh> kept;
+  for (size_t k = 0; k < elements.size(); ++k) {
+    if (is_cut[k]) ++cut;
+    else kept.push_back(std::move(elements[k]));
+  }
+  return kept;
+}
+
+}  // namespace
+
 QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
   QuiltSwatch swatch;
   swatch.mesh = orient_swatch(input, name);
+  swatch.elements = without_cut_elements(split_elements(swatch.mesh), swatch.cut_elements);
+  if (swatch.cut_elements > 0) {
+    swatch.mesh = orient_swatch(join_elements(swatch.elements), name);
+    swatch.elements = split_elements(swatch.mesh);
+  }
   const Rect2 bounds = xy_bounds(swatch.mesh);
   swatch.extent = bounds.hi - bounds.lo;
-  swatch.elements = split_elements(swatch.mesh);
   for (const TriMesh& e : swatch.elements) {
     swatch.element_bounds.push_back(xy_bounds(e));
     swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();

@@ -69,11 +69,14 @@ struct QuiltSwatch {
   glm::dvec2 extent{0.0};             //!< x-y size of the swatch
   double mean_edge = 1.0;             //!< mean edge length: the unit of Eq. 1 distances
   bool closed_elements = true;        //!< every element a closed 2-manifold
+  int cut_elements = 0;               //!< open elements cut by the input's border, left out
   //! Its elements' faces indexed once for every patch's correspondences.
   std::shared_ptr<const SwatchFaces> faces;
 };
 
-//! Puts `input` in its swatch frame and splits it into elements.
+//! Puts `input` in its swatch frame and splits it into elements. Open elements that reach the
+//! input's x-y bounds are left out (and counted) where some other element is closed: they were
+//! cut open by the border of a larger sheet, and copies of them would stay open.
 //! \throw InputError naming `name` for a degenerate swatch.
 QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name = "swatch");
 

@@ -42,6 +42,7 @@ QuiltSetup::QuiltSetup(const TriMesh& input_swatch, engine::Device& device, cons
         return GeometryMatcher(device, swatch.mesh, cell, matching_options(options, swatch));
       })) {
   stats.grid_source = matcher.grid_source();
+  stats.cut_swatch_elements = swatch.cut_elements;
 }
 
 void run_seed_loop(SeedFinder& seeds, HoleTracker& holes, const QuiltOptions& options, QuiltStats& stats,

@@ -46,6 +46,7 @@ struct QuiltStats {
   MergeCounts merges;
   int dropped_elements = 0;      //!< removed by the clean-up pass: dropped_open + dropped_intersecting
   int dropped_open = 0;          //!< not closed 2-manifolds although the swatch's elements are
+  int cut_swatch_elements = 0;   //!< swatch elements cut open by its border, left out (prepare_swatch)
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
   int joined_elements = 0;       //!< planar: elements joined into one they met face to face
   int cells = 0;

@@ -259,3 +259,44 @@ TEST_F(StepFixture, LongElementTakesPartThroughAPinnedPart) {
 
 }  // namespace
 }  // namespace meshquilt
+
+namespace meshquilt {
+namespace {
+
+// A closed axis-aligned box (12 outward triangles); `open` leaves its top off.
+TriMesh cut_test_box(const Vec3& lo, const Vec3& hi, bool open = false) {
+  TriMesh m;
+  for (int k = 0; k < 8; ++k) m.positions.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int f = 0; f < 6; ++f) {
+    if (open && f == 1) continue;
+    const int* q = faces[f];
+    m.triangles.push_back({q[0], q[1], q[2]});
+    m.triangles.push_back({q[0], q[2], q[3]});
+  }
+  return m;
+}
+
+TEST(PrepareSwatch, LeavesOutOpenElementsCutByTheBorderWhereOthersAreClosed) {
+  // Closed boxes, an open one at the right border and an open one inside.
+  const TriMesh swatch = join_elements(
+      {cut_test_box({1, 1, 0}, {2, 2, 0.5}), cut_test_box({3, 1, 0}, {4, 2, 0.5}), cut_test_box({5, 1, 0}, {6, 2, 0.5}, true),
+       cut_test_box({1, 3, 0}, {2, 4, 0.5}, true), cut_test_box({0, 0, 0}, {0.5, 0.5, 0.5}),
+       cut_test_box({0, 4.5, 0}, {0.5, 5, 0.5})});
+  const QuiltSwatch prepared = prepare_swatch(swatch);
+  EXPECT_EQ(prepared.cut_elements, 1);
+  EXPECT_EQ(prepared.elements.size(), 5u);
+  // The frame follows what is left: x from 0 to 4 (the open box at x 5..6 is gone).
+  EXPECT_NEAR(prepared.extent.x, 4.0, 1e-12);
+  EXPECT_NEAR(prepared.extent.y, 5.0, 1e-12);
+}
+
+TEST(PrepareSwatch, KeepsASwatchOfOpenElementsOnly) {
+  const TriMesh sheet = join_elements({cut_test_box({0, 0, 0}, {2, 2, 0.5}, true), cut_test_box({3, 0, 0}, {5, 2, 0.5}, true)});
+  const QuiltSwatch prepared = prepare_swatch(sheet);
+  EXPECT_EQ(prepared.cut_elements, 0);
+  EXPECT_EQ(prepared.elements.size(), 2u);
+}
+
+}  // namespace
+}  // namespace meshquilt
