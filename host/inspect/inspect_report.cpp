@@ -92,6 +92,8 @@ InspectReport::Rings ring_report(const RingLinks& links) {
   r.pieces = links.pieces;
   r.largest_piece_share = links.largest_piece_share;
   r.median_radius = links.median_radius;
+  r.radius_p10 = links.radius_p10;
+  r.radius_p90 = links.radius_p90;
   return r;
 }
 
@@ -241,6 +243,8 @@ nlohmann::ordered_json to_json(const InspectReport& r) {
     k["pieces"] = r.rings->pieces;
     k["largest_piece_share"] = r.rings->largest_piece_share;
     k["median_radius"] = r.rings->median_radius;
+    k["radius_p10"] = r.rings->radius_p10;
+    k["radius_p90"] = r.rings->radius_p90;
     if (r.rings->radius_ratio) k["radius_ratio"] = *r.rings->radius_ratio;
     if (r.rings->expected_rings) {
       k["expected_rings"] = *r.rings->expected_rings;
@@ -296,7 +300,7 @@ std::string to_text(const InspectReport& r) {
     s << "ring links:    ";
     for (size_t n = 0; n < k.histogram.size(); ++n) s << (n ? ", " : "") << n << ": " << k.histogram[n];
     s << "\n";
-    s << "ring radius:   median " << k.median_radius;
+    s << "ring radius:   median " << k.median_radius << " (10-90%: " << k.radius_p10 << " to " << k.radius_p90 << ")";
     if (k.radius_ratio) s << ", " << *k.radius_ratio << " x the swatch's";
     if (k.expected_rings) s << "; " << *k.expected_rings - k.rings << " missing of " << *k.expected_rings << " expected";
     s << "\n";

@@ -68,6 +68,7 @@ struct InspectReport {
     int32_t pieces = 0;
     double largest_piece_share = 0.0;
     double median_radius = 0.0;
+    double radius_p10 = 0.0, radius_p90 = 0.0;
     std::optional<double> radius_ratio;    //!< with a swatch: median radius / the swatch's
     std::optional<double> expected_rings;  //!< with a swatch and a plane or base: its ring density x area
   };

@@ -98,6 +98,10 @@ RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_eleme
     largest = std::max(largest, line.radius);
   }
   result.median_radius = median(radii);
+  std::sort(radii.begin(), radii.end());
+  const auto at = [&](double q) { return radii[static_cast<size_t>(std::lround(q * static_cast<double>(radii.size() - 1)))]; };
+  result.radius_p10 = at(0.1);
+  result.radius_p90 = at(0.9);
   // Centre lines that can meet have centres within the sum of their radii; a margin covers the
   // binning's inward bias.
   const double margin = 0.25 * result.median_radius;

@@ -42,6 +42,7 @@ struct RingLinks {
   int32_t pieces = 0;                              //!< connected parts of the link graph
   double largest_piece_share = 0.0;                //!< rings in the largest part / rings
   double median_radius = 0.0;                      //!< of the centre lines
+  double radius_p10 = 0.0, radius_p90 = 0.0;       //!< their 10th and 90th percentiles
 };
 
 //! Rings whose centre lines could meet (centres closer than the sum of their radii plus a

@@ -139,6 +139,19 @@ TEST(RingLinks, AChainOfTorusRings) {
   EXPECT_EQ(links.histogram[2], 3);
 }
 
+TEST(RingLinks, RadiusPercentilesOfRingsOfTenSizes) {
+  // Ten loose rings of radius 1, 2, ..., 10: the 10th and 90th percentiles are rings 2 and 9.
+  TriMesh rings;
+  for (int r = 1; r <= 10; ++r) rings = join_elements({rings, torus(Vec3(25.0 * r, 0, 0), X, Y, r, 0.1, r)});
+  int32_t elements = 0;
+  const std::vector<int32_t> face_element = face_components(rings, &elements);
+  ASSERT_EQ(elements, 10);
+  const RingLinks links = ring_links(rings, face_element, elements);
+  EXPECT_EQ(links.links.size(), 0u);
+  EXPECT_NEAR(links.radius_p10, 2.0, 0.04);
+  EXPECT_NEAR(links.radius_p90, 9.0, 0.18);
+}
+
 TEST(RingLinks, TheGeneratorsChainMailLinksInnerRingsToFour) {
   ChainmailOptions o = ChainmailOptions::small();
   o.rows = 6;
