@@ -10,7 +10,9 @@
 
 #include "core/error.h"
 #include "inspect/element_topology.h"
+#include "mesh/border_cut.h"
 #include "mesh/measures.h"
+#include "mesh/topology.h"
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -26,24 +28,6 @@ std::string plural(int64_t n, const std::string& one, const std::string& many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// Open elements whose x-y box reaches the swatch's own: the border went through them.
-int32_t elements_cut_by_border(const TriMesh& mesh, const ElementTopology& topology, const Box3& box, double tolerance) {
-  std::vector<Box3> boxes(topology.elements, Box3{Vec3(std::numeric_limits<double>::infinity()),
-                                                   Vec3(-std::numeric_limits<double>::infinity())});
-  for (size_t f = 0; f < mesh.num_faces(); ++f) {
-    Box3& b = boxes[topology.face_element[f]];
-    for (int32_t v : mesh.triangles[f]) b.lo = glm::min(b.lo, mesh.positions[v]), b.hi = glm::max(b.hi, mesh.positions[v]);
-  }
-  int32_t cut = 0;
-  for (int32_t e = 0; e < topology.elements; ++e) {
-    if (topology.element_closed[e]) continue;
-    const Box3& b = boxes[e];
-    cut += b.lo.x <= box.lo.x + tolerance || b.lo.y <= box.lo.y + tolerance || b.hi.x >= box.hi.x - tolerance ||
-           b.hi.y >= box.hi.y - tolerance;
-  }
-  return cut;
-}
-
 }  // namespace
 
 SwatchCheck check_swatch(const TriMesh& swatch, const std::string& source, const SwatchCheckOptions& options) {
@@ -57,9 +41,10 @@ SwatchCheck check_swatch(const TriMesh& swatch, const std::string& source, const
 
   const Box3 box = bounding_box(mesh.positions);
   check.extent = box.hi - box.lo;
-  const double diagonal_xy = std::hypot(check.extent.x, check.extent.y);
-  if (check.open_elements > 0)
-    check.cut_elements = elements_cut_by_border(mesh, topology, box, options.border_tolerance * diagonal_xy);
+  if (check.open_elements > 0) {
+    const std::vector<uint8_t> cut = cut_by_border(split_elements(mesh));
+    check.cut_elements = static_cast<int32_t>(std::count(cut.begin(), cut.end(), 1));
+  }
 
   const std::vector<FacePair> pairs =
       intersecting_face_pairs(mesh, topology.face_element, IntersectionScope::different_elements);
@@ -84,7 +69,7 @@ SwatchCheck check_swatch(const TriMesh& swatch, const std::string& source, const
                              "2-manifold, or synth drops its copies");
   if (check.cut_elements > 0)
     check.findings.push_back(plural(check.cut_elements, "element", "elements") +
-                             " cut open by the border (open, touching the x-y bounding box): crop between elements, "
+                             " cut open by the border (open, its rim on the x-y hull): crop between elements, "
                              "not through them");
   if (check.intersecting_element_pairs > 0)
     check.findings.push_back(plural(check.intersecting_element_pairs, "pair", "pairs") +

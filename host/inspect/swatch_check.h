@@ -17,14 +17,12 @@ struct SwatchCheckOptions {
   //! Largest z extent over the shorter x-y side of a swatch that counts as thin along z; our own
   //! swatches stay below 0.4.
   double max_thickness_ratio = 0.5;
-  //! An open element within this fraction of the x-y bbox diagonal of the box's side touches it.
-  double border_tolerance = 1e-3;
 };
 
 struct SwatchCheck {
   int32_t elements = 0;                 //!< vertex-connected components after welding
   int32_t open_elements = 0;            //!< not closed 2-manifolds
-  int32_t cut_elements = 0;             //!< open elements touching the x-y bounding box
+  int32_t cut_elements = 0;             //!< open elements whose rim lies on the x-y hull (mesh/border_cut.h)
   int64_t intersecting_face_pairs = 0;  //!< face pairs of different elements that meet
   int64_t intersecting_element_pairs = 0;
   Vec3 extent{0.0};                     //!< bounding-box sides

@@ -12,6 +12,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "mesh/border_cut.h"
 #include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
@@ -232,32 +233,15 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
 
 namespace {
 
-// Elements cut open by the swatch's border: open, and reaching its x-y bounds (within 1e-3 of the
-// x-y diagonal, as `swatch check` counts them: a cut through faces leaves a ragged edge). Where some other
-// element is closed the swatch was cut from a larger sheet (a mail or a weave) and these are
-// left out; a swatch of open elements only (a relief sheet) keeps them.
+// Elements cut open by the swatch's border (mesh/border_cut.h): where some other element is
+// closed the swatch was cropped from a larger sheet (a mail or a weave) and these are left out;
+// a swatch of open elements only (a relief sheet) keeps them.
 std::vector<TriMesh> without_cut_elements(std::vector<TriMesh> elements, int& cut) {
-  // The bounds of the faces: a file may hold vertices no face uses.
-  Rect2 bounds{glm::dvec2(std::numeric_limits<double>::max()), glm::dvec2(std::numeric_limits<double>::lowest())};
-  for (const TriMesh& e : elements) {
-    const Rect2 b = xy_bounds(e);
-    bounds.lo = glm::min(bounds.lo, b.lo);
-    bounds.hi = glm::max(bounds.hi, b.hi);
-  }
-  const double tolerance = 1e-3 * glm::length(bounds.hi - bounds.lo);
-  std::vector<uint8_t> is_cut(elements.size(), 0);
-  bool any_closed = false;
-  for (size_t k = 0; k < elements.size(); ++k) {
-    if (inspect_surface(elements[k]).closed_manifold()) {
-      any_closed = true;
-      continue;
-    }
-    const Rect2 b = xy_bounds(elements[k]);
-    is_cut[k] = b.lo.x <= bounds.lo.x + tolerance || b.lo.y <= bounds.lo.y + tolerance ||
-                b.hi.x >= bounds.hi.x - tolerance || b.hi.y >= bounds.hi.y - tolerance;
-  }
   cut = 0;
+  const bool any_closed = std::any_of(elements.begin(), elements.end(),
+                                      [](const TriMesh& e) { return inspect_surface(e).closed_manifold(); });
   if (!any_closed) return elements;
+  const std::vector<uint8_t> is_cut = cut_by_border(elements);
   std::vector<TriMesh> kept;
   for (size_t k = 0; k < elements.size(); ++k) {
     if (is_cut[k]) ++cut;

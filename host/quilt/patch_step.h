@@ -74,9 +74,9 @@ struct QuiltSwatch {
   std::shared_ptr<const SwatchFaces> faces;
 };
 
-//! Puts `input` in its swatch frame and splits it into elements. Open elements that reach the
-//! input's x-y bounds are left out (and counted) where some other element is closed: they were
-//! cut open by the border of a larger sheet, and copies of them would stay open.
+//! Puts `input` in its swatch frame and splits it into elements. Open elements cut by its border
+//! (mesh/border_cut.h) are left out (and counted) where some other element is closed: the
+//! swatch was cropped from a larger sheet through them, and copies of them would stay open.
 //! \throw InputError naming `name` for a degenerate swatch.
 QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name = "swatch");
 

@@ -2,7 +2,9 @@
 """Quilts a fixed sample of foreign swatches (make_swatches.py) and checks what must hold.
 
 Usage:
-  python3 foreign_corpus_test.py MESHQUILT WORK_DIR [FAMILY ...]
+  python3 foreign_corpus_test.py MESHQUILT WORK_DIR [--seeds FIRST-LAST] [FAMILY ...]
+
+With --seeds, every family of SAMPLE is quilted with each seed in the range instead of SAMPLE's.
 
 For each (family, seed) of SAMPLE: the swatch is made, `meshquilt swatch check` must accept it
 (the border-cut family: refuse it; synth leaves its cut elements out), `synth --plane 2x2` grows it, and `meshquilt inspect` of the
@@ -182,7 +184,14 @@ def main(argv):
         print(__doc__)
         return 2
     meshquilt, work = argv[0], Path(argv[1])
-    only = set(argv[2:])
+    rest = argv[2:]
+    sample = SAMPLE
+    if rest[:1] == ["--seeds"] and len(rest) >= 2:
+        first, last = (int(x) for x in rest[1].split("-"))
+        families = list(dict.fromkeys(family for family, _ in SAMPLE))
+        sample = [(family, seed) for family in families for seed in range(first, last + 1)]
+        rest = rest[2:]
+    only = set(rest)
     python = find_numpy_python()
     if python is None:
         print("skipped: no Python with numpy (Debian: apt-get install python3-numpy)")
@@ -190,7 +199,7 @@ def main(argv):
     work.mkdir(parents=True, exist_ok=True)
     run = Run(meshquilt, work, python)
     ours_per_face = run.ours()
-    for family, seed in SAMPLE:
+    for family, seed in sample:
         if not only or family in only:
             try:
                 run.family(family, seed, ours_per_face)

@@ -278,17 +278,32 @@ TriMesh cut_test_box(const Vec3& lo, const Vec3& hi, bool open = false) {
 }
 
 TEST(PrepareSwatch, LeavesOutOpenElementsCutByTheBorderWhereOthersAreClosed) {
-  // Closed boxes, an open one at the right border and an open one inside.
+  // Closed boxes at the corners of a 10 x 10 footprint and one inside; an open box on its right
+  // side (cut by the crop) and a small open one in the middle (open, but not cut).
   const TriMesh swatch = join_elements(
-      {cut_test_box({1, 1, 0}, {2, 2, 0.5}), cut_test_box({3, 1, 0}, {4, 2, 0.5}), cut_test_box({5, 1, 0}, {6, 2, 0.5}, true),
-       cut_test_box({1, 3, 0}, {2, 4, 0.5}, true), cut_test_box({0, 0, 0}, {0.5, 0.5, 0.5}),
-       cut_test_box({0, 4.5, 0}, {0.5, 5, 0.5})});
+      {cut_test_box({0, 0, 0}, {0.5, 0.5, 0.5}), cut_test_box({9.5, 0, 0}, {10, 0.5, 0.5}),
+       cut_test_box({0, 9.5, 0}, {0.5, 10, 0.5}), cut_test_box({9.5, 9.5, 0}, {10, 10, 0.5}),
+       cut_test_box({2, 2, 0}, {3, 3, 0.5}), cut_test_box({9.6, 4, 0}, {10, 5, 0.5}, true),
+       cut_test_box({4, 4, 0}, {4.5, 4.5, 0.5}, true)});
   const QuiltSwatch prepared = prepare_swatch(swatch);
   EXPECT_EQ(prepared.cut_elements, 1);
-  EXPECT_EQ(prepared.elements.size(), 5u);
-  // The frame follows what is left: x from 0 to 4 (the open box at x 5..6 is gone).
-  EXPECT_NEAR(prepared.extent.x, 4.0, 1e-12);
-  EXPECT_NEAR(prepared.extent.y, 5.0, 1e-12);
+  EXPECT_EQ(prepared.elements.size(), 6u);
+  EXPECT_NEAR(prepared.extent.x, 10.0, 1e-12);
+  EXPECT_NEAR(prepared.extent.y, 10.0, 1e-12);
+}
+
+TEST(PrepareSwatch, LeavesOutCutElementsOfACropTurnedInXY) {
+  // The same swatch turned by 30 degrees: the crop's side is no longer along an axis.
+  TriMesh swatch = join_elements(
+      {cut_test_box({0, 0, 0}, {0.5, 0.5, 0.5}), cut_test_box({9.5, 0, 0}, {10, 0.5, 0.5}),
+       cut_test_box({0, 9.5, 0}, {0.5, 10, 0.5}), cut_test_box({9.5, 9.5, 0}, {10, 10, 0.5}),
+       cut_test_box({2, 2, 0}, {3, 3, 0.5}), cut_test_box({9.6, 4, 0}, {10, 5, 0.5}, true),
+       cut_test_box({4, 4, 0}, {4.5, 4.5, 0.5}, true)});
+  const double c = std::cos(0.5236), s = std::sin(0.5236);
+  for (Vec3& p : swatch.positions) p = Vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
+  const QuiltSwatch prepared = prepare_swatch(swatch);
+  EXPECT_EQ(prepared.cut_elements, 1);
+  EXPECT_EQ(prepared.elements.size(), 6u);
 }
 
 TEST(PrepareSwatch, KeepsASwatchOfOpenElementsOnly) {
