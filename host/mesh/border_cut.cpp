@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <unordered_map>
 
 #include "mesh/topology.h"
 
@@ -18,9 +17,8 @@ double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
 
 // Andrew's monotone chain: the hull's corners, counter-clockwise.
 std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points) {
-  std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  });
+  std::sort(points.begin(), points.end(),
+            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   points.erase(std::unique(points.begin(), points.end()), points.end());
   if (points.size() < 3) return points;
   std::vector<glm::dvec2> hull(2 * points.size());

@@ -1,13 +1,13 @@
 #include "surface/cone_metric_field.h"
 
+#include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <glm/geometric.hpp>
 #include <limits>
 
-#include <Eigen/Sparse>
-#include <glm/geometric.hpp>
-
+#include "mesh/topology.h"
 #include "numerics/sparse_solve.h"
 
 namespace meshquilt {
@@ -38,34 +38,10 @@ std::vector<double> angle_defects(const TriMesh& mesh) {
   return defect;
 }
 
-// One closed component of genus 0: every edge has a face across it, all faces reach each other,
-// and V - E + F = 2.
+// One closed component of genus 0.
 bool closed_sphere(const BaseSurface& base) {
-  const TriMesh& mesh = base.mesh;
-  if (mesh.num_faces() == 0) return false;
-  for (const auto& across : base.face_across)
-    for (int32_t g : across)
-      if (g < 0) return false;
-  std::vector<uint8_t> reached(mesh.num_faces(), 0);
-  std::deque<int32_t> queue{0};
-  reached[0] = 1;
-  size_t count = 1;
-  while (!queue.empty()) {
-    const int32_t f = queue.front();
-    queue.pop_front();
-    for (int32_t g : base.face_across[f])
-      if (!reached[g]) {
-        reached[g] = 1;
-        ++count;
-        queue.push_back(g);
-      }
-  }
-  if (count != mesh.num_faces()) return false;
-  size_t used = 0;
-  for (const auto& faces : base.vertex_faces) used += faces.empty() ? 0 : 1;
-  const long euler = static_cast<long>(used) - static_cast<long>(3 * mesh.num_faces() / 2) +
-                     static_cast<long>(mesh.num_faces());
-  return euler == 2;
+  const SurfaceReport report = inspect_surface(base.mesh);
+  return report.closed_manifold() && report.components == 1 && report.euler == 2;
 }
 
 }  // namespace
@@ -130,7 +106,8 @@ std::optional<double> field_scale_spread(const BaseSurface& base, const Directio
   return scale_spread(base, cone_metric_scale(base, curvature));
 }
 
-std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction) {
+std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry,
+                                                const Vec3& root_direction) {
   if (!closed_sphere(base)) return std::nullopt;
   const TriMesh& mesh = base.mesh;
   const size_t vertices = mesh.num_vertices();
@@ -138,7 +115,7 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
   for (size_t f = 0; f < mesh.num_faces(); ++f)
     for (int32_t v : mesh.triangles[f]) vertex_area[v] += base.face_areas[f] / 3.0;
   const double deficit = 2.0 * kPi / symmetry;  // of one cone of index 1 / n
-  const int count = 2 * symmetry;                // their deficits sum to 2 pi x 2
+  const int count = 2 * symmetry;               // their deficits sum to 2 pi x 2
   // The curvature asked for: the cones', and what is left spread by area.
   const auto target = [&](const std::vector<int32_t>& cones) {
     const double left = 4.0 * kPi - deficit * static_cast<double>(cones.size());
@@ -150,14 +127,16 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
   const auto lowest = [&](const std::vector<double>& phi, const std::vector<int32_t>& taken) {
     int32_t best = -1;
     for (size_t v = 0; v < vertices; ++v) {
-      if (base.vertex_faces[v].empty() || std::find(taken.begin(), taken.end(), static_cast<int32_t>(v)) != taken.end())
+      if (base.vertex_faces[v].empty() ||
+          std::find(taken.begin(), taken.end(), static_cast<int32_t>(v)) != taken.end())
         continue;
       if (best < 0 || phi[v] < phi[best]) best = static_cast<int32_t>(v);
     }
     return best;
   };
   std::vector<int32_t> cones;
-  while (static_cast<int>(cones.size()) < count) cones.push_back(lowest(cone_metric_scale(base, target(cones)), cones));
+  while (static_cast<int>(cones.size()) < count)
+    cones.push_back(lowest(cone_metric_scale(base, target(cones)), cones));
   const std::vector<double> phi = cone_metric_scale(base, target(cones));
 
   // Parallel transport in the scaled metric: the surface's own across each edge, turned by the
@@ -168,7 +147,8 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
   std::vector<uint8_t> reached(mesh.num_faces(), 0);
   const Vec3 n0 = base.face_normals[0];
   Vec3 d = root_direction - glm::dot(root_direction, n0) * n0;
-  if (!(glm::length(d) > 1e-12)) d = mesh.positions[mesh.triangles[0][1]] - mesh.positions[mesh.triangles[0][0]];
+  if (!(glm::length(d) > 1e-12))
+    d = mesh.positions[mesh.triangles[0][1]] - mesh.positions[mesh.triangles[0][0]];
   field.directions[0] = glm::normalize(d);
   reached[0] = 1;
   std::deque<int32_t> queue{0};
@@ -187,7 +167,8 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
       const double turn = w * (phi[b] - phi[a]);
       const Vec3 carried = transport_across(base, f, g, a, b, field.directions[f]);
       const Vec3 n = base.face_normals[g];
-      field.directions[g] = glm::normalize(std::cos(turn) * carried + std::sin(turn) * glm::cross(n, carried));
+      field.directions[g] =
+          glm::normalize(std::cos(turn) * carried + std::sin(turn) * glm::cross(n, carried));
       queue.push_back(g);
     }
   }

@@ -1,6 +1,8 @@
 // The patch step on its own (quilt/patch_step.h): which cells it reports covered, that a refused
 // input leaves its cells for another try, and that an element longer than several patches takes
 // part through a pinned part that can be put back exactly.
+#include "quilt/patch_step.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,7 @@
 
 #include "device.h"
 #include "mesh/topology.h"
-#include "quilt/patch_step.h"
+#include "support/boxes.h"
 #include "swatch/tube_mesh.h"
 
 namespace meshquilt {
@@ -88,8 +90,8 @@ struct StepFixture : ::testing::Test {
         const bool inside = cx >= footprint.lo.x && cx <= footprint.hi.x && cy >= footprint.lo.y &&
                             cy <= footprint.hi.y && domain.contains(glm::dvec2(cx, cy));
         cells[static_cast<size_t>(y) * grid.nx + x] =
-            inside && settled(cx + grid.cell, cy) && settled(cx - grid.cell, cy) && settled(cx, cy + grid.cell) &&
-            settled(cx, cy - grid.cell);
+            inside && settled(cx + grid.cell, cy) && settled(cx - grid.cell, cy) &&
+            settled(cx, cy + grid.cell) && settled(cx, cy - grid.cell);
       }
     return cells;
   }
@@ -230,7 +232,8 @@ TEST_F(StepFixture, LongElementTakesPartThroughAPinnedPart) {
   TriMesh whole;
   std::map<std::tuple<double, double, double>, int32_t> index_of;
   const auto add_vertex = [&](const Vec3& p) {
-    const auto [it, fresh] = index_of.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<int32_t>(whole.positions.size()));
+    const auto [it, fresh] =
+        index_of.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<int32_t>(whole.positions.size()));
     if (fresh) whole.positions.push_back(p);
     return it->second;
   };
@@ -263,28 +266,17 @@ TEST_F(StepFixture, LongElementTakesPartThroughAPinnedPart) {
 namespace meshquilt {
 namespace {
 
-// A closed axis-aligned box (12 outward triangles); `open` leaves its top off.
-TriMesh cut_test_box(const Vec3& lo, const Vec3& hi, bool open = false) {
-  TriMesh m;
-  for (int k = 0; k < 8; ++k) m.positions.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
-  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (int f = 0; f < 6; ++f) {
-    if (open && f == 1) continue;
-    const int* q = faces[f];
-    m.triangles.push_back({q[0], q[1], q[2]});
-    m.triangles.push_back({q[0], q[2], q[3]});
-  }
-  return m;
+// Closed boxes at the corners of a 10 x 10 footprint and one inside; an open box on its right
+// side (cut by the crop) and a small open one in the middle (open, but not cut).
+TriMesh cropped_boxes() {
+  return join_elements({test::box({0, 0, 0}, {0.5, 0.5, 0.5}), test::box({9.5, 0, 0}, {10, 0.5, 0.5}),
+                        test::box({0, 9.5, 0}, {0.5, 10, 0.5}), test::box({9.5, 9.5, 0}, {10, 10, 0.5}),
+                        test::box({2, 2, 0}, {3, 3, 0.5}), test::open_box({9.6, 4, 0}, {10, 5, 0.5}),
+                        test::open_box({4, 4, 0}, {4.5, 4.5, 0.5})});
 }
 
 TEST(PrepareSwatch, LeavesOutOpenElementsCutByTheBorderWhereOthersAreClosed) {
-  // Closed boxes at the corners of a 10 x 10 footprint and one inside; an open box on its right
-  // side (cut by the crop) and a small open one in the middle (open, but not cut).
-  const TriMesh swatch = join_elements(
-      {cut_test_box({0, 0, 0}, {0.5, 0.5, 0.5}), cut_test_box({9.5, 0, 0}, {10, 0.5, 0.5}),
-       cut_test_box({0, 9.5, 0}, {0.5, 10, 0.5}), cut_test_box({9.5, 9.5, 0}, {10, 10, 0.5}),
-       cut_test_box({2, 2, 0}, {3, 3, 0.5}), cut_test_box({9.6, 4, 0}, {10, 5, 0.5}, true),
-       cut_test_box({4, 4, 0}, {4.5, 4.5, 0.5}, true)});
+  const TriMesh swatch = cropped_boxes();
   const QuiltSwatch prepared = prepare_swatch(swatch);
   EXPECT_EQ(prepared.cut_elements, 1);
   EXPECT_EQ(prepared.elements.size(), 6u);
@@ -294,11 +286,7 @@ TEST(PrepareSwatch, LeavesOutOpenElementsCutByTheBorderWhereOthersAreClosed) {
 
 TEST(PrepareSwatch, LeavesOutCutElementsOfACropTurnedInXY) {
   // The same swatch turned by 30 degrees: the crop's side is no longer along an axis.
-  TriMesh swatch = join_elements(
-      {cut_test_box({0, 0, 0}, {0.5, 0.5, 0.5}), cut_test_box({9.5, 0, 0}, {10, 0.5, 0.5}),
-       cut_test_box({0, 9.5, 0}, {0.5, 10, 0.5}), cut_test_box({9.5, 9.5, 0}, {10, 10, 0.5}),
-       cut_test_box({2, 2, 0}, {3, 3, 0.5}), cut_test_box({9.6, 4, 0}, {10, 5, 0.5}, true),
-       cut_test_box({4, 4, 0}, {4.5, 4.5, 0.5}, true)});
+  TriMesh swatch = cropped_boxes();
   const double c = std::cos(0.5236), s = std::sin(0.5236);
   for (Vec3& p : swatch.positions) p = Vec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
   const QuiltSwatch prepared = prepare_swatch(swatch);
@@ -307,7 +295,8 @@ TEST(PrepareSwatch, LeavesOutCutElementsOfACropTurnedInXY) {
 }
 
 TEST(PrepareSwatch, KeepsASwatchOfOpenElementsOnly) {
-  const TriMesh sheet = join_elements({cut_test_box({0, 0, 0}, {2, 2, 0.5}, true), cut_test_box({3, 0, 0}, {5, 2, 0.5}, true)});
+  const TriMesh sheet =
+      join_elements({test::open_box({0, 0, 0}, {2, 2, 0.5}), test::open_box({3, 0, 0}, {5, 2, 0.5})});
   const QuiltSwatch prepared = prepare_swatch(sheet);
   EXPECT_EQ(prepared.cut_elements, 0);
   EXPECT_EQ(prepared.elements.size(), 2u);
