@@ -12,5 +12,6 @@ void add_synth_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_batch_command(CLI::App& app);
 void add_embed_command(CLI::App& app);
+void add_edit_command(CLI::App& app);
 
 }  // namespace meshquilt::cli

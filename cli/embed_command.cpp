@@ -12,8 +12,8 @@
 #include "core/error.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
-#include "surface/element_placement.h"
 #include "shell/texture_file.h"
+#include "texture_placement.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -28,36 +28,14 @@ struct EmbedArgs {
 
 void run_embed(const EmbedArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  if (args.embed != "auto" && args.embed != "shell" && args.embed != "normal")
-    throw InputError("--embed: expected auto, shell or normal, got '" + args.embed + "'",
-                     ErrorKind::invalid_option);
+  check_mesh_output(args.output);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   const QuiltTexture texture = read_texture_file(args.texture);
   const TriMesh base = prepare_base(read_mesh(args.base), args.base);
   check_texture_base(texture, base, args.base);
-  const BaseSurface surface(base);
-  std::unique_ptr<SurfaceEmbedding> embedding;
-  int reduced_vertices = 0;
-  if (args.embed == "shell" && texture.shell.height <= 0.0)
-    throw InputError(args.texture + ": written with --embed normal, so it holds no shell map",
-                     ErrorKind::invalid_option);
-  const bool shell_map = texture.shell.height > 0.0 && args.embed != "normal";
-  if (shell_map) {
-    auto shell =
-        std::make_unique<ShellEmbedding>(surface, texture.shell, build_shell(surface, texture.shell.height));
-    reduced_vertices = shell->map().shell().reduced_vertices;
-    embedding = std::move(shell);
-  } else {
-    embedding = std::make_unique<NormalEmbedding>(surface);
-  }
-  // The rule synth placed its elements by, so that the same base gives the same output.
-  ElementPlacement placement = place_elements(*embedding, texture.vertices, texture.triangles, texture.elements);
-  TriMesh out;
-  out.positions = std::move(placement.positions);
-  out.triangles = texture.triangles;
-  out.elements = texture.elements;
-  out.sources = texture.sources;
+  const PlacedTexture placed = place_texture(texture, base, args.embed, args.texture);
+  const TriMesh& out = placed.mesh;
   write_mesh(out, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = {{"texture", args.texture},
@@ -65,9 +43,9 @@ void run_embed(const EmbedArgs& args) {
                             {"output", args.output},
                             {"faces", out.num_faces()},
                             {"vertices", out.num_vertices()},
-                            {"embed", shell_map ? "shell" : "normal"},
-                            {"shell_reduced_vertices", reduced_vertices},
-                            {"synthesis_map_elements", placement.moved_elements()},
+                            {"embed", placed.shell_map ? "shell" : "normal"},
+                            {"shell_reduced_vertices", placed.shell_reduced_vertices},
+                            {"synthesis_map_elements", placed.synthesis_map_elements},
                             {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);

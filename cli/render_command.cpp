@@ -86,7 +86,8 @@ View parse_view(const std::string& text) {
 RenderMode parse_render_mode(const std::string& text) {
   if (text == "shaded") return RenderMode::shaded;
   if (text == "elements") return RenderMode::elements;
-  throw InputError("--mode: expected shaded or elements, got '" + text + "'", ErrorKind::invalid_option);
+  if (text == "colors") return RenderMode::colors;
+  throw InputError("--mode: expected shaded, elements or colors, got '" + text + "'", ErrorKind::invalid_option);
 }
 
 void add_render_command(CLI::App& app) {
@@ -100,7 +101,7 @@ void add_render_command(CLI::App& app) {
                   "top|oblique|front|side (oblique: 35 degrees down from the front right)")
       ->capture_default_str();
   cmd->add_option("--mode", args->mode,
-                  "shaded: grey-blue, lightly tinted per element; elements: one flat colour per element")
+                  "shaded: grey-blue, lightly tinted per element; elements: one flat colour per element; colors: the vertex colours")
       ->capture_default_str();
   cmd->add_option("--size", args->size, "image size WxH in pixels, each side at most 8192")
       ->capture_default_str();

@@ -54,13 +54,6 @@ void parse_plane(const std::string& text, double* width, double* height) {
     throw InputError("--plane: sizes must lie in (0, 1000], got '" + text + "'", ErrorKind::invalid_option);
 }
 
-void check_mesh_extension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
-    throw IoError(ErrorKind::unknown_format, file.string() + ": unknown output format (use .ply, .obj, .off or .stl)");
-}
-
 // What either driver reports, for the stats JSON.
 nlohmann::json quilt_summary(const QuiltStats& stats) {
   return {
@@ -75,6 +68,7 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
       {"refused_pinned", stats.merges.refused_pinned},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
+      {"dropped_folded", stats.dropped_folded},
       {"cut_swatch_elements", stats.cut_swatch_elements},
       {"dropped_intersecting", stats.dropped_intersecting},
       {"joined_elements", stats.joined_elements},
@@ -113,7 +107,7 @@ SynthSettings check_synth_args(const SynthArgs& args) {
   settings.progress_mode = parse_progress_mode(args.progress);
   if (args.cells < 4 || args.cells > 256)
     throw InputError("--cells: expected 4..256, got " + std::to_string(args.cells), ErrorKind::invalid_option);
-  check_mesh_extension(args.output);
+  check_mesh_output(args.output);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   if (!args.write_field.empty()) check_writable(args.write_field);

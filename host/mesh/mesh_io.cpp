@@ -81,12 +81,18 @@ TriMesh parse_mesh(std::string_view data, const std::string& extension, const st
   return mesh;
 }
 
+void check_mesh_output(const std::filesystem::path& file) {
+  const std::string ext = lower_extension(file);
+  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl" && ext != ".glb") {
+    throw IoError(ErrorKind::unknown_format,
+                  file.string() + ": unknown mesh format '" + ext + "' (expected .ply .obj .off .stl .glb)");
+  }
+}
+
 void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const WriteOptions& options) {
   const std::string name = file.string();
+  check_mesh_output(file);
   const std::string ext = lower_extension(file);
-  if (ext != ".obj" && ext != ".ply" && ext != ".off" && ext != ".stl") {
-    throw IoError(ErrorKind::unknown_format, name + ": unknown mesh format '" + ext + "' (expected .obj .ply .off .stl)");
-  }
   if (!mesh.elements.empty() && mesh.elements.size() != mesh.triangles.size()) {
     throw IoError(ErrorKind::write_failed, name + ": " + std::to_string(mesh.elements.size()) + " element ids for " +
                                               std::to_string(mesh.triangles.size()) + " faces");
@@ -107,6 +113,8 @@ void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const Wr
     content = io::format_obj(mesh);
   } else if (ext == ".off") {
     content = io::format_off(mesh);
+  } else if (ext == ".glb") {
+    content = io::format_glb(mesh);
   } else {
     content = io::format_stl(mesh, options.binary);
   }

@@ -20,7 +20,8 @@ namespace meshquilt {
 //! Reads a mesh, choosing the format by extension (.obj .ply .off .stl, case-insensitive).
 //! Polygons are fan-triangulated. Per-face element ids are read back from a PLY face property
 //! `element`, or from OBJ groups when every face lies in a group named `element_N` (otherwise
-//! `elements` stays empty). The result has passed validate_mesh.
+//! `elements` stays empty); PLY vertex colours `red green blue` (or `r g b`; floats in [0, 1])
+//! go to `colors`. The result has passed validate_mesh.
 //! \throw IoError(file_unreadable) missing/unreadable; IoError(unknown_format) other extension;
 //!        InputError(invalid_mesh) parse error, no faces, bad index, NaN/Inf coordinates, a
 //!        header declaring more items than the file can hold; InputError(too_large) a file or
@@ -40,8 +41,10 @@ struct WriteOptions {
   const CancelToken* cancel = nullptr;  //!< polled while writing: Cancelled leaves `file` untouched
 };
 
-//! Writes a mesh, choosing the format by extension (.ply .obj .off .stl). Element ids, when
-//! present, go to a PLY face property `element` (int) or to OBJ groups `g element_N`.
+//! Writes a mesh, choosing the format by extension (.ply .obj .off .stl, or binary glTF .glb, write
+//! only: io/write_glb.cpp). Element ids, when
+//! present, go to a PLY face property `element` (int) or to OBJ groups `g element_N`; vertex
+//! colours to PLY only (`red green blue`, uchar).
 //! Atomic (write_file_atomic): a temporary file beside `file`, fsynced and renamed, so a failure
 //! or a kill at any moment never leaves a truncated or overwritten output.
 //! \throw IoError(unknown_format) other extension; IoError(write_failed) on any write error;
@@ -49,5 +52,9 @@ struct WriteOptions {
 //! Coordinates are written in shortest round-trip form (ASCII) or as doubles (PLY binary), so
 //! PLY/OBJ/OFF round trips are exact; STL stores floats.
 void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const WriteOptions& options = {});
+
+//! Whether write_mesh can write `file`'s format, checked before long work.
+//! \throw IoError(unknown_format) naming the file.
+void check_mesh_output(const std::filesystem::path& file);
 
 }  // namespace meshquilt

@@ -9,7 +9,7 @@
 namespace meshquilt {
 
 BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
-                                      std::vector<uint8_t>& alive) {
+                                      bool swatch_unfolded, std::vector<uint8_t>& alive) {
   BrokenElements removed;
   std::vector<size_t> candidates;
   for (size_t i = 0; i < elements.size(); ++i)
@@ -28,7 +28,17 @@ BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& element
       part_of.push_back(i);
     }
   const TriMesh joined = join_elements(parts);
-  const auto pairs = intersecting_face_pairs(joined, joined.elements, IntersectionScope::different_elements);
+  const FaceIntersections found = find_intersecting_faces(joined, joined.elements);
+  if (swatch_unfolded) {
+    for (const auto& [a, b] : found.same_element) {
+      const size_t i = part_of[joined.elements[a]];
+      if (alive[i]) {
+        alive[i] = 0;
+        ++removed.folded;
+      }
+    }
+  }
+  const std::vector<FacePair>& pairs = found.different_elements;
   removed.intersecting_face_pairs = static_cast<int>(pairs.size());
   std::map<std::pair<int32_t, int32_t>, int> element_pairs;
   for (const auto& [a, b] : pairs) ++element_pairs[std::minmax(joined.elements[a], joined.elements[b])];

@@ -10,15 +10,17 @@ namespace meshquilt {
 
 struct BrokenElements {
   int open = 0;          //!< not closed 2-manifolds although the swatch's elements are
+  int folded = 0;        //!< passed through themselves although the swatch's elements do not
   int intersecting = 0;  //!< removed because they passed through others
   int intersecting_face_pairs = 0;  //!< face pairs of different elements that met, before removal
 };
 
 //! Marks broken elements dead in `alive` (#elements): when `swatch_closed`, every element that
-//! is not a closed 2-manifold; then, while alive elements intersect (exact tests), the one that
+//! is not a closed 2-manifold; when `swatch_unfolded`, every element two of whose faces that share
+//! no vertex meet (deformation or embedding folded it); then, while alive elements intersect (exact tests), the one that
 //! intersects the most alive others (ties: fewer faces, then the later one), so that as few
 //! elements go as possible.
 BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
-                                      std::vector<uint8_t>& alive);
+                                      bool swatch_unfolded, std::vector<uint8_t>& alive);
 
 }  // namespace meshquilt

@@ -18,6 +18,7 @@
 #include "mesh/topology.h"
 #include "quilt/layer_collisions.h"
 #include "quilt/quilt_policies.h"
+#include "spatial/intersecting_pairs.h"
 #include "quilt/stage_timer.h"
 
 namespace meshquilt {
@@ -266,6 +267,9 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
     swatch.element_bounds.push_back(xy_bounds(e));
     swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();
   }
+  const TriMesh joined = join_elements(swatch.elements);
+  swatch.unfolded_elements =
+      intersecting_face_pairs(joined, joined.elements, IntersectionScope::same_element).empty();
   swatch.mean_edge = mean_edge_length(swatch.mesh);
   swatch.faces = std::make_shared<const SwatchFaces>(swatch.elements);
   return swatch;

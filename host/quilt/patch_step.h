@@ -69,6 +69,7 @@ struct QuiltSwatch {
   glm::dvec2 extent{0.0};             //!< x-y size of the swatch
   double mean_edge = 1.0;             //!< mean edge length: the unit of Eq. 1 distances
   bool closed_elements = true;        //!< every element a closed 2-manifold
+  bool unfolded_elements = true;      //!< no element passes through itself
   int cut_elements = 0;               //!< open elements cut by the input's border, left out
   //! Its elements' faces indexed once for every patch's correspondences.
   std::shared_ptr<const SwatchFaces> faces;

@@ -78,12 +78,13 @@ TriMesh finish_quilt(std::vector<TriMesh>& elements, std::vector<uint8_t>& alive
     StageTimer timer(stats.stage_seconds, "cleanup");
     std::vector<const TriMesh*> meshes;
     for (const TriMesh& m : elements) meshes.push_back(&m);
-    const BrokenElements removed = remove_broken_elements(meshes, setup.swatch.closed_elements, alive);
+    const BrokenElements removed = remove_broken_elements(meshes, setup.swatch.closed_elements, setup.swatch.unfolded_elements, alive);
     stats.dropped_open = removed.open;
+    stats.dropped_folded = removed.folded;
     stats.dropped_intersecting = removed.intersecting;
     if (removed_out) *removed_out = removed;
   }
-  stats.dropped_elements = stats.dropped_open + stats.dropped_intersecting;
+  stats.dropped_elements = stats.dropped_open + stats.dropped_folded + stats.dropped_intersecting;
   std::vector<TriMesh> kept;
   std::vector<int32_t> kept_sources;
   for (size_t i = 0; i < elements.size(); ++i)

@@ -44,8 +44,9 @@ struct QuiltOptions {
 struct QuiltStats {
   int patches = 0;
   MergeCounts merges;
-  int dropped_elements = 0;      //!< removed by the clean-up pass: dropped_open + dropped_intersecting
+  int dropped_elements = 0;      //!< removed by the clean-up pass: open, folded and intersecting
   int dropped_open = 0;          //!< not closed 2-manifolds although the swatch's elements are
+  int dropped_folded = 0;        //!< passed through themselves although the swatch's elements do not
   int cut_swatch_elements = 0;   //!< swatch elements cut open by its border, left out (prepare_swatch)
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
   int joined_elements = 0;       //!< planar: elements joined into one they met face to face

@@ -57,6 +57,13 @@ std::vector<Vec3> face_colors(const TriMesh& mesh, RenderMode mode, int32_t plai
       colors[f] = Vec3(0.72);
       continue;
     }
+    if (mode == RenderMode::colors) {
+      Vec3 sum(0.0);
+      for (int32_t v : mesh.triangles[f])
+        sum += Vec3(mesh.colors[v][0], mesh.colors[v][1], mesh.colors[v][2]);
+      colors[f] = sum / (3.0 * 255.0);
+      continue;
+    }
     const Vec3 element = element_color(ids[f]);
     colors[f] = mode == RenderMode::elements ? element : glm::mix(kNeutral, element, kShadedTint);
   }
@@ -94,6 +101,9 @@ void validate_render_options(const RenderOptions& options) {
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
   validate_render_options(options);
   if (mesh.num_faces() == 0) throw InputError("render: the mesh has no faces");
+  if (options.mode == RenderMode::colors && mesh.colors.size() != mesh.positions.size())
+    throw InputError("--mode colors: the mesh has no vertex colours (see meshquilt edit --color-by)",
+                     ErrorKind::invalid_option);
   Vec3 lo, hi;
   bounding_box(mesh, &lo, &hi);
   const OrthographicCamera camera =

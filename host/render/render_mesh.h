@@ -13,6 +13,7 @@ namespace meshquilt {
 enum class RenderMode {
   shaded,    //!< a neutral grey-blue, lightly tinted per element, so shape reads first
   elements,  //!< each element in its own flat colour (element_palette.h), lightly shaded
+  colors,    //!< the mesh's vertex colours (`meshquilt edit --color-by`), averaged per face
 };
 
 //! Largest accepted image side, in pixels.
@@ -44,7 +45,7 @@ void validate_render_options(const RenderOptions& options);
 //! count. Channels of a hit are capped at 240, so with the default background a pixel whose
 //! rays all hit faces never takes the background colour.
 //! \throw InputError(invalid_mesh) when the mesh has no faces; InputError(invalid_option) as
-//!        validate_render_options; DeviceError/SolverError from Embree.
+//!        validate_render_options, or for RenderMode::colors on a mesh without vertex colours; DeviceError/SolverError from Embree.
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options = {});
 
 }  // namespace meshquilt

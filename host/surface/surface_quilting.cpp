@@ -421,6 +421,14 @@ class SurfaceDriver {
     BrokenElements removed;
     SurfaceQuilt result;
     result.mesh = finish_quilt(embedded, alive_, sources, setup_, options_, stats_, &removed);
+    if (stats_.dropped_elements > 0 && embedding_->has_synthesis_map()) {
+      // Which map an element goes through depends on the others present: place the kept ones
+      // again, so that `embed` of the texture over this base gives this output back.
+      std::vector<TriMesh> kept = embed_elements();
+      QuiltOptions joined_only = options_;
+      joined_only.cleanup = false;
+      result.mesh = finish_quilt(kept, alive_, sources, setup_, joined_only, stats_, nullptr);
+    }
     stats_.intersecting_face_pairs = removed.intersecting_face_pairs;
     const HoleSummary hole_summary = holes_.summary(cells_.neighbours, cells_.areas);
     stats_.holes = hole_summary.holes;

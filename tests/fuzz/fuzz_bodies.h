@@ -72,7 +72,7 @@ inline void netpbm_body(const uint8_t* data, size_t size) {
 // every interpolated direction must be a finite unit vector.
 inline const TriMesh& field_base() {
   static const TriMesh base{
-      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0.3}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, {}, {}};
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0.3}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, {}, {}, {}};
   return base;
 }
 

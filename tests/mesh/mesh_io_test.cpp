@@ -100,6 +100,27 @@ TEST_F(MeshIoTest, RoundTripsExactlyWithElements) {
   expect_same_mesh(mesh, read_mesh(path("m.off")), false);
 }
 
+TEST_F(MeshIoTest, PlyKeepsVertexColoursAndReadsFloatOnes) {
+  TriMesh mesh = two_tetrahedra();
+  for (size_t v = 0; v < mesh.num_vertices(); ++v)
+    mesh.colors.push_back({static_cast<uint8_t>(30 * v), static_cast<uint8_t>(255 - v), 7});
+  for (bool binary : {true, false}) {
+    const fs::path p = path(binary ? "cb.ply" : "ca.ply");
+    write_mesh(mesh, p, WriteOptions{binary});
+    const TriMesh back = read_mesh(p);
+    expect_same_mesh(mesh, back, true);
+    EXPECT_EQ(back.colors, mesh.colors);
+  }
+  const std::string floats =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float r\nproperty float g\nproperty float b\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header\n0 0 0 1 0.5 0\n1 0 0 0 0 0\n0 1 0 0.2 0.2 1\n3 0 1 2\n";
+  const TriMesh m = parse_mesh(floats, ".ply", "floats.ply");
+  ASSERT_EQ(m.colors.size(), 3u);
+  EXPECT_EQ(m.colors[0], (std::array<uint8_t, 3>{255, 128, 0}));
+  EXPECT_EQ(m.colors[2], (std::array<uint8_t, 3>{51, 51, 255}));
+}
+
 TEST_F(MeshIoTest, StlRoundTripKeepsFloatPositionsAndSharesVertices) {
   const TriMesh mesh = two_tetrahedra();
   for (bool binary : {true, false}) {

@@ -13,6 +13,7 @@
 #include "device.h"
 #include "mesh/topology.h"
 #include "support/boxes.h"
+#include "support/torus.h"
 #include "swatch/tube_mesh.h"
 
 namespace meshquilt {
@@ -300,6 +301,12 @@ TEST(PrepareSwatch, KeepsASwatchOfOpenElementsOnly) {
   const QuiltSwatch prepared = prepare_swatch(sheet);
   EXPECT_EQ(prepared.cut_elements, 0);
   EXPECT_EQ(prepared.elements.size(), 2u);
+}
+
+TEST(PrepareSwatch, NotesWhetherAnElementPassesThroughItself) {
+  EXPECT_TRUE(prepare_swatch(cropped_boxes()).unfolded_elements);
+  EXPECT_FALSE(prepare_swatch(test::folded_torus()).unfolded_elements);
+  EXPECT_TRUE(prepare_swatch(test::torus(1.0, 0.3)).unfolded_elements);
 }
 
 }  // namespace

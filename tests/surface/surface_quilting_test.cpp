@@ -37,6 +37,7 @@ struct SurfaceQuality {
   int elements = 0;
   int closed = 0;
   double intersecting_share = 0.0;  // faces in a pair of different elements / faces
+  int self_intersecting_pairs = 0;  // face pairs of one element that share no vertex and meet
   double coverage = 0.0;            // base area with an output vertex within the cover radius
   double height_min = 0.0;          // bbox diagonals
   double height_max = 0.0;
@@ -116,7 +117,9 @@ SurfaceQuality measure(const TriMesh& output, const TriMesh& base, double cover_
     ++q.elements;
     q.closed += inspect_surface(weld_vertices(e)).closed_manifold();
   }
-  const auto pairs = intersecting_face_pairs(output, output.elements, IntersectionScope::different_elements);
+  const FaceIntersections found = find_intersecting_faces(output, output.elements);
+  const auto& pairs = found.different_elements;
+  q.self_intersecting_pairs = static_cast<int>(found.same_element.size());
   std::vector<uint8_t> hit(output.num_faces(), 0);
   for (const auto& [a, b] : pairs) hit[a] = hit[b] = 1;
   q.intersecting_share = static_cast<double>(std::count(hit.begin(), hit.end(), 1)) / output.num_faces();
@@ -171,7 +174,8 @@ SurfaceRun run_surface(const TriMesh& raw_base, const TriMesh& swatch, double sc
 // What a finished run must meet. The defaults are the bar of the curved-surface issue; a base that
 // does not meet it yet gets its own, measured, bound (see docs/performance.md, known limits).
 struct QualityBar {
-  double max_dropped_share = 0.02;  // dropped elements / (kept + dropped)
+  double max_dropped_share = 0.02;  // dropped open or intersecting elements / (kept + dropped)
+  double max_folded_share = 0.02;   // dropped elements that passed through themselves / (kept + dropped)
   double min_height = -0.01;        // lowest vertex, signed, in bounding-box diagonals
   double min_coverage = 0.97;       // share of base samples with output over them
   double max_height_over = 0.01;    // highest vertex above the shell height, in diagonals
@@ -200,9 +204,9 @@ void expect_quality(const SurfaceRun& run, const TriMesh& swatch, const char* wh
   SCOPED_TRACE(what);
   // Swatch copies: the base's area over the swatch's x-y footprint at the run's scale.
   const double copies = base_area / (run.swatch_extent.x * run.swatch_extent.y * run.unit * run.unit);
-  std::printf("%s: %.0f swatch copies, %d kept, %d dropped, %d holes (%.2f%% of the area), coverage %.3f, heights "
+  std::printf("%s: %.0f swatch copies, %d kept, %d dropped (%d folded), %d holes (%.2f%% of the area), coverage %.3f, heights "
               "%.4f..%.4f diagonals\n",
-              what, copies, q.elements, run.stats.dropped_elements, run.stats.holes, 100.0 * run.stats.hole_area / base_area,
+              what, copies, q.elements, run.stats.dropped_elements, run.stats.dropped_folded, run.stats.holes, 100.0 * run.stats.hole_area / base_area,
               q.coverage, q.height_min, q.height_max);
   EXPECT_GE(copies, bar.min_copies);
   EXPECT_LE(copies, bar.max_copies);
@@ -212,7 +216,10 @@ void expect_quality(const SurfaceRun& run, const TriMesh& swatch, const char* wh
   EXPECT_LE(q.height_max, run.stats.shell_height / diagonal + bar.max_height_over);
   EXPECT_GE(q.closed, 0.95 * q.elements);
   EXPECT_LE(q.intersecting_share, 0.01);
-  EXPECT_LE(run.stats.dropped_elements, bar.max_dropped_share * (q.elements + run.stats.dropped_elements));
+  const int total = q.elements + run.stats.dropped_elements;
+  EXPECT_LE(run.stats.dropped_elements - run.stats.dropped_folded, bar.max_dropped_share * total);
+  EXPECT_LE(run.stats.dropped_folded, bar.max_folded_share * total);
+  EXPECT_EQ(q.self_intersecting_pairs, 0);
   EXPECT_EQ(run.output.sources.size(), run.output.num_faces());
 }
 
@@ -424,17 +431,28 @@ TEST_P(SharedBase, MeetsTheQualityBar) {
   expect_quality(run, swatch, GetParam().file, GetParam().bar);
 }
 
+// Measured bounds where deformed elements pass through themselves (dropped, see decision 0033):
+// fertility 4.0% of its rings (its coverage falls to 0.936 with them), the two knots 3.8%, the
+// teapot 12.9% (its crease rings fold with per-patch charts too: 30 of 187), the fertility weave
+// 11.5% of its yarns.
+QualityBar folding_bar(QualityBar bar, double max_folded_share, double min_coverage = 0.97) {
+  bar.max_folded_share = max_folded_share;
+  bar.min_coverage = min_coverage;
+  return bar;
+}
+
 // The teapot meets the bar through the shell map; under normal displacement its open rim and
 // handle put some vertices on the far side of the nearest base sheet (signed height -0.033).
 // The weave is the issue's other swatch; its footprint is square, so it needs a finer scale than
 // the chain mail for 50 copies of it (55 at 0.13; 36 at 0.16).
 INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
                          ::testing::Values(SharedCase{"bunny.off", 0.16, issue_bar()},
-                                           SharedCase{"fertility.off", 0.16, issue_bar()},
-                                           SharedCase{"head.off", 0.2, {}}, SharedCase{"knot2.off", 0.2, {}},
-                                           SharedCase{"teapot.obj", 0.2, {}},
+                                           SharedCase{"fertility.off", 0.16, folding_bar(issue_bar(), 0.05, 0.93)},
+                                           SharedCase{"head.off", 0.2, {}},
+                                           SharedCase{"knot2.off", 0.2, folding_bar({}, 0.05)},
+                                           SharedCase{"teapot.obj", 0.2, folding_bar({}, 0.15)},
                                            SharedCase{"bunny.off", 0.13, issue_bar(), Embed::shell, true},
-                                           SharedCase{"fertility.off", 0.13, issue_bar(), Embed::shell, true}),
+                                           SharedCase{"fertility.off", 0.13, folding_bar(issue_bar(), 0.13), Embed::shell, true}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.')) + (info.param.weave ? "_weave" : "_chainmail");

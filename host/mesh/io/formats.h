@@ -22,5 +22,6 @@ std::string format_obj(const TriMesh& mesh);
 std::string format_off(const TriMesh& mesh);
 std::string format_ply(const TriMesh& mesh, bool binary);
 std::string format_stl(const TriMesh& mesh, bool binary);
+std::string format_glb(const TriMesh& mesh);  // write only
 
 }  // namespace meshquilt::io

@@ -268,6 +268,8 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
     const bool is_vertex = element.name == "vertex";
     const bool is_face = element.name == "face";
     int ix = -1, iy = -1, iz = -1, iindices = -1, ielement = -1, isource = -1;
+    int icolor[3] = {-1, -1, -1};
+    bool has_colors = false;
     if (is_vertex) {
       ix = find_property(element, {"x"});
       iy = find_property(element, {"y"});
@@ -276,7 +278,13 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
       if (element.properties[ix].is_list || element.properties[iy].is_list || element.properties[iz].is_list) {
         parse_fail(name, "PLY vertex x, y, z must be scalars");
       }
+      icolor[0] = find_property(element, {"red", "r"});
+      icolor[1] = find_property(element, {"green", "g"});
+      icolor[2] = find_property(element, {"blue", "b"});
+      has_colors = icolor[0] >= 0 && icolor[1] >= 0 && icolor[2] >= 0 && !element.properties[icolor[0]].is_list &&
+                   !element.properties[icolor[1]].is_list && !element.properties[icolor[2]].is_list;
       mesh.positions.reserve(static_cast<size_t>(std::min(element.count, bound)));
+      if (has_colors) mesh.colors.reserve(static_cast<size_t>(std::min(element.count, bound)));
       seen_vertices = true;
     } else if (is_face) {
       iindices = find_property(element, {"vertex_indices", "vertex_index"});
@@ -293,6 +301,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
     }
     for (int64_t item = 0; item < element.count; ++item) {
       Vec3 p(0.0);
+      std::array<uint8_t, 3> color{0, 0, 0};
       int32_t element_id = 0, source_id = 0;
       for (size_t k = 0; k < element.properties.size(); ++k) {
         const PlyProperty& property = element.properties[k];
@@ -303,6 +312,12 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
           if (index == ix) p.x = value;
           if (index == iy) p.y = value;
           if (index == iz) p.z = value;
+          for (int c = 0; c < 3 && has_colors; ++c)
+            if (index == icolor[c]) {
+              // Float colours are in [0, 1]; integer ones in [0, 255].
+              const double scaled = ply_is_float(property.type) ? 255.0 * value : value;
+              color[c] = static_cast<uint8_t>(std::clamp(std::round(scaled), 0.0, 255.0));
+            }
           if (index == ielement) {
             if (!(value >= 0.0 && value <= std::numeric_limits<int32_t>::max())) {
               parse_fail(name, "PLY face " + std::to_string(item) + " has a bad element id");
@@ -339,6 +354,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
       }
       if (is_vertex) {
         mesh.positions.push_back(p);
+        if (has_colors) mesh.colors.push_back(color);
       } else if (is_face) {
         const size_t before = mesh.triangles.size();
         push_fan(mesh.triangles, polygon);

@@ -1,4 +1,5 @@
-//! Writing PLY, binary little endian or ASCII, with face properties `element` and `source`.
+//! Writing PLY, binary little endian or ASCII, with face properties `element` and `source` and,
+//! when the mesh has them, vertex colours `red green blue` (uchar).
 
 #include "mesh/io/formats.h"
 
@@ -18,20 +19,31 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
   out += binary ? "binary_little_endian" : "ascii";
   out += " 1.0\ncomment written by meshquilt\nelement vertex ";
   append_int(out, static_cast<int64_t>(mesh.positions.size()));
-  out += "\nproperty double x\nproperty double y\nproperty double z\nelement face ";
+  out += "\nproperty double x\nproperty double y\nproperty double z\n";
+  const bool with_colors = !mesh.colors.empty() && mesh.colors.size() == mesh.positions.size();
+  if (with_colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  out += "element face ";
   append_int(out, static_cast<int64_t>(mesh.triangles.size()));
   out += "\nproperty list uchar int vertex_indices\n";
   if (with_elements) out += "property int element\n";
   const bool with_sources = mesh.sources.size() == mesh.triangles.size() && !mesh.sources.empty();
   if (with_sources) out += "property int source\n";
   out += "end_header\n";
-  for (const Vec3& p : mesh.positions) {
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3& p = mesh.positions[v];
     if (binary) {
       append_binary(out, p.x, true);
       append_binary(out, p.y, true);
       append_binary(out, p.z, true);
+      if (with_colors)
+        for (uint8_t c : mesh.colors[v]) out += static_cast<char>(c);
     } else {
       append_vec(out, p);
+      if (with_colors)
+        for (uint8_t c : mesh.colors[v]) {
+          out += ' ';
+          append_int(out, c);
+        }
       out += '\n';
     }
   }
