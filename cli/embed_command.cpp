@@ -10,6 +10,7 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
+#include "embed_frames.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "shell/texture_file.h"
@@ -24,9 +25,17 @@ struct EmbedArgs {
   std::string output;
   std::string stats;
   std::string embed = "auto";
+  std::string base_frames;
+  std::string format = "ply";
 };
 
 void run_embed(const EmbedArgs& args) {
+  if (!args.base_frames.empty()) {
+    if (!args.base.empty()) throw InputError("--base and --base-frames: give one", ErrorKind::invalid_option);
+    run_embed_frames({args.texture, args.base_frames, args.output, args.embed, args.format, args.stats});
+    return;
+  }
+  if (args.base.empty()) throw InputError("embed: give --base or --base-frames", ErrorKind::invalid_option);
   const auto start = std::chrono::steady_clock::now();
   check_mesh_output(args.output);
   check_writable(args.output);
@@ -58,8 +67,13 @@ void add_embed_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "embed", "Place a layer written by `synth --write-texture` over a base with the same connectivity");
   cmd->add_option("--texture", args->texture, "texture-space file from synth --write-texture")->required();
-  cmd->add_option("--base", args->base, "the base, edited (same faces and vertices, moved)")->required();
-  cmd->add_option("-o,--output", args->output, "output mesh (.ply, .obj, .off, .stl)")->required();
+  cmd->add_option("--base", args->base, "the base, edited (same faces and vertices, moved)");
+  cmd->add_option("--base-frames", args->base_frames,
+                  "a folder of base frames (same connectivity): one output frame each, -o being a folder");
+  cmd->add_option("-o,--output", args->output, "output mesh (.ply, .obj, .off, .stl, .glb), or folder")
+      ->required();
+  cmd->add_option("--format", args->format, "with --base-frames: ply, obj, off, stl or glb")
+      ->capture_default_str();
   cmd->add_option("--stats", args->stats, "write statistics as JSON");
   cmd->add_option("--embed", args->embed, "auto (as synth embedded it), shell or normal (displacement)")
       ->capture_default_str();

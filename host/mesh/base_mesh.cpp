@@ -102,4 +102,25 @@ TriMesh prepare_base(const TriMesh& input, const std::string& source) {
   return mesh;
 }
 
+std::vector<int32_t> prepared_vertex_sources(const TriMesh& mesh) {
+  // weld_vertices keeps, in index order, the representatives used by a face that does not collapse.
+  const std::vector<int32_t> representative = weld_representatives(mesh.positions, kWeldTolerance);
+  std::vector<char> used(mesh.positions.size(), 0);
+  for (const Tri& t : mesh.triangles) {
+    const Tri w = {representative[t[0]], representative[t[1]], representative[t[2]]};
+    if (w[0] != w[1] && w[1] != w[2] && w[0] != w[2])
+      for (int32_t v : w) used[v] = 1;
+  }
+  std::vector<int32_t> sources;
+  for (size_t v = 0; v < used.size(); ++v)
+    if (used[v]) sources.push_back(static_cast<int32_t>(v));
+  return sources;
+}
+
+TriMesh posed_base(const TriMesh& prepared, const std::vector<int32_t>& sources, const TriMesh& frame) {
+  TriMesh posed = prepared;
+  for (size_t v = 0; v < sources.size(); ++v) posed.positions[v] = frame.positions[sources[v]];
+  return posed;
+}
+
 }  // namespace meshquilt

@@ -2,6 +2,7 @@
 // over an edited base, and bad input (a one-line error, a distinct exit code, nothing written).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <glm/geometric.hpp>
 
@@ -121,6 +122,50 @@ TEST_F(Embed, NormalDisplacementOfTheSameTextureKeepsItsTopology) {
   for (size_t v = 0; v < a.num_vertices(); ++v)
     worst = std::max(worst, std::abs(glm::length(a.positions[v]) - glm::length(b.positions[v])));
   EXPECT_LT(worst, 0.05);
+}
+
+// Frame k of a bend that grows over the sequence: each point turned about z by an angle that
+// grows with x, up to 60 degrees at the last frame.
+TriMesh bent(const TriMesh& m, int k, int frames) {
+  TriMesh out = m;
+  for (Vec3& p : out.positions) {
+    const double angle = (1.0472 * k / (frames - 1)) * 0.5 * (p.x + 1.0);
+    p = Vec3(std::cos(angle) * p.x - std::sin(angle) * p.y, std::sin(angle) * p.x + std::cos(angle) * p.y, p.z);
+  }
+  return out;
+}
+
+TEST_F(Embed, EveryFrameOfAMovingBaseEqualsASingleEmbedAndResumes) {
+  const int frames = 24;
+  const auto in = *dir_ / "walk", out = *dir_ / "walk_out";
+  std::filesystem::create_directories(in);
+  for (int k = 0; k < frames; ++k) write_off(in / ("pose_" + std::to_string(k) + ".off"), bent(*base_, k, frames));
+  const auto run = [&] {
+    return run_cli("embed --texture '" + (*dir_ / "t.mqt").string() + "' --base-frames '" + in.string() + "' -o '" +
+                   out.string() + "' --stats '" + (*dir_ / "frames.json").string() + "'");
+  };
+  const CliResult r = run();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (int k = 0; k < frames; ++k) {
+    const auto single = *dir_ / ("single_" + std::to_string(k) + ".ply");
+    ASSERT_EQ(embed(*dir_ / "t.mqt", in / ("pose_" + std::to_string(k) + ".off"), single).exit_code, 0);
+    EXPECT_EQ(read_file(out / ("pose_" + std::to_string(k) + ".ply")), read_file(single)) << "frame " << k;
+  }
+  const std::string stats = read_file(*dir_ / "frames.json");
+  EXPECT_NE(stats.find("\"made\": 24"), std::string::npos) << stats;
+  // A rerun keeps what is there and makes only a frame that went missing.
+  std::filesystem::remove(out / "pose_7.ply");
+  const CliResult again = run();
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  const std::string resumed = read_file(*dir_ / "frames.json");
+  EXPECT_NE(resumed.find("\"made\": 1"), std::string::npos) << resumed;
+  EXPECT_EQ(read_file(out / "pose_7.ply"), read_file(*dir_ / "single_7.ply"));
+  // A frame of other connectivity stops the run with exit code 15, naming it.
+  write_off(in / "pose_30.off", icosphere(1));
+  const CliResult bad = run();
+  EXPECT_EQ(bad.exit_code, 15) << bad.output;
+  EXPECT_NE(bad.output.find("pose_30.off"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "pose_30.ply"));
 }
 
 class EmbedBadInput : public Embed {

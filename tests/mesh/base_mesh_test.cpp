@@ -329,5 +329,25 @@ TEST(PrepareBaseShared, GenusFourFertilityIsAcceptedOutward) {
   EXPECT_GT(signed_volume(prepared), 0.0);
 }
 
+TEST(PrepareBase, LaterFramesArePosedByRawVertexWithoutWeldingAgain) {
+  // Two triangles sharing an edge, with the shared corners duplicated in the file (as an OBJ
+  // exported per face gives them): 6 raw vertices, 4 after welding.
+  TriMesh raw;
+  raw.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  raw.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const TriMesh prepared = prepare_base(raw, "two.obj");
+  const std::vector<int32_t> sources = prepared_vertex_sources(raw);
+  ASSERT_EQ(sources.size(), prepared.num_vertices());
+  for (size_t v = 0; v < sources.size(); ++v) EXPECT_EQ(prepared.positions[v], raw.positions[sources[v]]);
+  // A later frame in which two vertices that were apart meet: posed, they stay two vertices.
+  TriMesh frame = raw;
+  for (Vec3& p : frame.positions) p += Vec3(0.0, 0.0, 2.0);
+  frame.positions[4] = frame.positions[0];
+  const TriMesh posed = posed_base(prepared, sources, frame);
+  EXPECT_EQ(posed.triangles, prepared.triangles);
+  ASSERT_EQ(posed.num_vertices(), prepared.num_vertices());
+  for (size_t v = 0; v < sources.size(); ++v) EXPECT_EQ(posed.positions[v], frame.positions[sources[v]]);
+}
+
 }  // namespace
 }  // namespace meshquilt
