@@ -13,5 +13,6 @@ void add_render_command(CLI::App& app);
 void add_batch_command(CLI::App& app);
 void add_embed_command(CLI::App& app);
 void add_edit_command(CLI::App& app);
+void add_animate_command(CLI::App& app);
 
 }  // namespace meshquilt::cli

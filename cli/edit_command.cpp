@@ -125,6 +125,7 @@ void run_edit(const EditArgs& args) {
       const TriMesh base = prepare_base(read_mesh(args.base), args.base);
       check_texture_base(texture, base, args.base);
       mesh = place_texture(texture, base, args.embed, args.input).mesh;
+      mesh.origins.clear();
     } else {
       mesh.triangles = texture.triangles;
       mesh.elements = texture.elements;

@@ -27,12 +27,14 @@ struct EmbedArgs {
   std::string embed = "auto";
   std::string base_frames;
   std::string format = "ply";
+  bool provenance = false;
 };
 
 void run_embed(const EmbedArgs& args) {
   if (!args.base_frames.empty()) {
     if (!args.base.empty()) throw InputError("--base and --base-frames: give one", ErrorKind::invalid_option);
-    run_embed_frames({args.texture, args.base_frames, args.output, args.embed, args.format, args.stats});
+    run_embed_frames(
+        {args.texture, args.base_frames, args.output, args.embed, args.format, args.stats, args.provenance});
     return;
   }
   if (args.base.empty()) throw InputError("embed: give --base or --base-frames", ErrorKind::invalid_option);
@@ -43,7 +45,8 @@ void run_embed(const EmbedArgs& args) {
   const QuiltTexture texture = read_texture_file(args.texture);
   const TriMesh base = prepare_base(read_mesh(args.base), args.base);
   check_texture_base(texture, base, args.base);
-  const PlacedTexture placed = place_texture(texture, base, args.embed, args.texture);
+  PlacedTexture placed = place_texture(texture, base, args.embed, args.texture);
+  if (!args.provenance) placed.mesh.origins.clear();
   const TriMesh& out = placed.mesh;
   write_mesh(out, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -72,6 +75,9 @@ void add_embed_command(CLI::App& app) {
                   "a folder of base frames (same connectivity): one output frame each, -o being a folder");
   cmd->add_option("-o,--output", args->output, "output mesh (.ply, .obj, .off, .stl, .glb), or folder")
       ->required();
+  cmd->add_flag(
+      "--provenance", args->provenance,
+      "write each vertex's swatch vertex (PLY `origin`, glTF `_ORIGIN`; texture files from version 2)");
   cmd->add_option("--format", args->format, "with --base-frames: ply, obj, off, stl or glb")
       ->capture_default_str();
   cmd->add_option("--stats", args->stats, "write statistics as JSON");

@@ -47,7 +47,9 @@ bool natural_less(const std::string& a, const std::string& b) {
   return a.size() - i < b.size() - j;
 }
 
-std::vector<fs::path> list_frames(const fs::path& folder) {
+}  // namespace
+
+std::vector<fs::path> list_mesh_frames(const fs::path& folder) {
   std::error_code error;
   if (!fs::is_directory(folder, error))
     throw IoError(ErrorKind::file_unreadable, folder.string() + ": not a folder of base frames");
@@ -67,6 +69,8 @@ std::vector<fs::path> list_frames(const fs::path& folder) {
   return frames;
 }
 
+namespace {
+
 double largest_move(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
   double largest = 0.0;
   for (size_t v = 0; v < from.size(); ++v) largest = std::max(largest, glm::length(to[v] - from[v]));
@@ -78,7 +82,7 @@ double largest_move(const std::vector<Vec3>& from, const std::vector<Vec3>& to) 
 void run_embed_frames(const EmbedFramesArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   check_mesh_output("frame." + args.format);
-  const std::vector<fs::path> frames = list_frames(args.frames);
+  const std::vector<fs::path> frames = list_mesh_frames(args.frames);
   std::error_code error;
   fs::create_directories(args.output, error);
   check_writable(fs::path(args.output) / "frame");
@@ -86,8 +90,10 @@ void run_embed_frames(const EmbedFramesArgs& args) {
   const QuiltTexture texture = read_texture_file(args.texture);
 
   // A record of what made the frames already in the folder: kept only when it matches.
-  const nlohmann::json made_by = {
-      {"texture_sha256", sha256_file(args.texture)}, {"embed", args.embed}, {"format", args.format}};
+  const nlohmann::json made_by = {{"texture_sha256", sha256_file(args.texture)},
+                                  {"embed", args.embed},
+                                  {"format", args.format},
+                                  {"provenance", args.provenance}};
   const fs::path record = fs::path(args.output) / ".meshquilt-frames.json";
   bool resume = false;
   if (fs::exists(record)) {
@@ -127,7 +133,8 @@ void run_embed_frames(const EmbedFramesArgs& args) {
       entry["kept"] = true;
       previous_output.clear();
     } else {
-      const PlacedTexture placed = place_texture(texture, posed, args.embed, args.texture);
+      PlacedTexture placed = place_texture(texture, posed, args.embed, args.texture);
+      if (!args.provenance) placed.mesh.origins.clear();
       write_mesh(placed.mesh, out);
       ++made;
       if (!previous_output.empty()) {

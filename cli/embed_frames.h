@@ -2,7 +2,9 @@
 // `meshquilt embed --texture T.mqt --base-frames DIR -o FRAMES/`: one synthesized layer over
 // every frame of an animated base with the same connectivity.
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace meshquilt::cli {
 
@@ -13,6 +15,7 @@ struct EmbedFramesArgs {
   std::string embed = "auto";
   std::string format = "ply";
   std::string stats;
+  bool provenance = false;
 };
 
 // Frames are the folder's .obj .ply .off .stl files in natural order (frame2 before frame10).
@@ -24,5 +27,9 @@ struct EmbedFramesArgs {
 //        without frames; InputError(base_mismatch) "FRAME: problem" for a frame of another
 //        connectivity (earlier frames stay written).
 void run_embed_frames(const EmbedFramesArgs& args);
+
+// The .obj .ply .off .stl files of a folder in natural order.
+// \throw IoError(file_unreadable) for a missing folder; InputError(invalid_option) for none.
+std::vector<std::filesystem::path> list_mesh_frames(const std::filesystem::path& folder);
 
 }  // namespace meshquilt::cli

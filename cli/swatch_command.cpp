@@ -20,6 +20,7 @@
 #include "swatch/heightfield.h"
 #include "swatch/netpbm.h"
 #include "swatch/nuts.h"
+#include "swatch/vine.h"
 #include "swatch/weave.h"
 #include "swatch/weave_pattern.h"
 
@@ -63,9 +64,11 @@ class Binder {
 
 void add_common(CLI::App* cmd, Common& common, bool random) {
   cmd->add_option("-o,--output", common.output, "output mesh (.ply .obj .off .stl)")->required();
-  cmd->add_option("--seed", common.seed, random ? "seed of every random choice" : "accepted for uniformity; this kind is not random")
+  cmd->add_option("--seed", common.seed,
+                  random ? "seed of every random choice" : "accepted for uniformity; this kind is not random")
       ->capture_default_str();
-  cmd->add_option("--preset", common.preset, "starting sizes: default (paper-sized) or small (a few hundred to 2,000 faces)")
+  cmd->add_option("--preset", common.preset,
+                  "starting sizes: default (paper-sized) or small (a few hundred to 2,000 faces)")
       ->check(CLI::IsMember({"default", "small"}))
       ->capture_default_str();
   cmd->add_flag("--ascii", common.ascii, "ASCII PLY/STL instead of binary");
@@ -82,7 +85,8 @@ void write(const TriMesh& mesh, const Common& common) {
 }
 
 void add_chainmail(CLI::App* parent, const std::shared_ptr<Common>& common) {
-  auto* cmd = parent->add_subcommand("chainmail", "European 4-in-1 chain mail: tilted rings, each linked through four neighbours");
+  auto* cmd = parent->add_subcommand(
+      "chainmail", "European 4-in-1 chain mail: tilted rings, each linked through four neighbours");
   add_common(cmd, *common, false);
   auto b = std::make_shared<Binder<ChainmailOptions>>();
   b->add(cmd, "--rows", &ChainmailOptions::rows, "ring rows along y (even)");
@@ -95,7 +99,8 @@ void add_chainmail(CLI::App* parent, const std::shared_ptr<Common>& common) {
   b->add(cmd, "--ring-segments", &ChainmailOptions::ring_segments, "segments around a ring");
   b->add(cmd, "--wire-segments", &ChainmailOptions::wire_segments, "segments around the wire");
   cmd->callback([common, b] {
-    const ChainmailOptions preset = common->preset == "small" ? ChainmailOptions::small() : ChainmailOptions{};
+    const ChainmailOptions preset =
+        common->preset == "small" ? ChainmailOptions::small() : ChainmailOptions{};
     write(make_chainmail(b->resolve(preset)), *common);
   });
 }
@@ -114,7 +119,8 @@ WeaveYarns yarns_named(const std::string& name) {
 }
 
 void add_weave(CLI::App* parent, const std::shared_ptr<Common>& common) {
-  auto* cmd = parent->add_subcommand("weave", "woven yarns: warps along y and wefts along x, over and under by a weave pattern");
+  auto* cmd = parent->add_subcommand(
+      "weave", "woven yarns: warps along y and wefts along x, over and under by a weave pattern");
   add_common(cmd, *common, false);
   auto pattern = std::make_shared<std::string>("plain");
   cmd->add_option("--pattern", *pattern, "plain, twill:M/N, satin:M/N, or a PBM/PGM image (dark: warp over)")
@@ -137,10 +143,12 @@ void add_weave(CLI::App* parent, const std::shared_ptr<Common>& common) {
 }
 
 void add_wire(CLI::App* parent, const std::shared_ptr<Common>& common) {
-  auto* cmd = parent->add_subcommand("wire", "a sparse square mesh of thin crimped wires: a plain weave, any wire count");
+  auto* cmd = parent->add_subcommand(
+      "wire", "a sparse square mesh of thin crimped wires: a plain weave, any wire count");
   add_common(cmd, *common, false);
   auto wires = std::make_shared<int>(0);
-  cmd->add_option("--wires", *wires, "wires each way (default 9; small preset 5)")->check(CLI::PositiveNumber);
+  cmd->add_option("--wires", *wires, "wires each way (default 9; small preset 5)")
+      ->check(CLI::PositiveNumber);
   auto b = std::make_shared<Binder<WeaveOptions>>(WeaveOptions::wire());
   b->add(cmd, "--warps", &WeaveOptions::warps, "wires along y (overrides --wires)");
   b->add(cmd, "--wefts", &WeaveOptions::wefts, "wires along x (overrides --wires)");
@@ -160,7 +168,8 @@ void add_wire(CLI::App* parent, const std::shared_ptr<Common>& common) {
 }
 
 void add_fruit(CLI::App* parent, const std::shared_ptr<Common>& common) {
-  auto* cmd = parent->add_subcommand("fruit", "apple-like blobs of varied size and shape in one layer, not touching");
+  auto* cmd =
+      parent->add_subcommand("fruit", "apple-like blobs of varied size and shape in one layer, not touching");
   add_common(cmd, *common, true);
   auto b = std::make_shared<Binder<FruitOptions>>();
   b->add(cmd, "--columns", &FruitOptions::columns, "fruit per row");
@@ -176,8 +185,49 @@ void add_fruit(CLI::App* parent, const std::shared_ptr<Common>& common) {
   });
 }
 
+void add_vine(CLI::App* parent, const std::shared_ptr<Common>& common) {
+  auto* cmd = parent->add_subcommand(
+      "vine", "swaying stalks, closed tubes in one layer; with --frames, its animation");
+  add_common(cmd, *common, true);
+  auto b = std::make_shared<Binder<VineOptions>>();
+  b->add(cmd, "--columns", &VineOptions::columns, "stalks per row");
+  b->add(cmd, "--rows", &VineOptions::rows, "rows");
+  b->add(cmd, "--spacing", &VineOptions::spacing, "distance between roots");
+  b->add(cmd, "--height", &VineOptions::height, "stalk height");
+  b->add(cmd, "--radius", &VineOptions::radius, "tube radius");
+  b->add(cmd, "--curl", &VineOptions::curl, "rest lean of the tips along x, in heights");
+  b->add(cmd, "--sway", &VineOptions::sway, "largest tip displacement of the animation, in heights (0..0.5)");
+  b->add(cmd, "--segments", &VineOptions::segments, "centreline points per stalk");
+  b->add(cmd, "--sides", &VineOptions::sides, "tube sides");
+  auto frames = std::make_shared<int>(0);
+  cmd->add_option("--frames", *frames, "also write this many frames of one sway cycle to OUTPUT_STEM_frames/")
+      ->capture_default_str();
+  cmd->callback([common, b, frames] {
+    VineOptions options = b->resolve(common->preset == "small" ? VineOptions::small() : VineOptions{});
+    options.seed = common->seed;
+    if (*frames < 0)
+      throw InputError("--frames: expected 0 or more, got " + std::to_string(*frames),
+                       ErrorKind::invalid_option);
+    write(make_vine(options), *common);
+    if (*frames == 0) return;
+    const std::filesystem::path folder =
+        common->output.parent_path() / (common->output.stem().string() + "_frames");
+    std::filesystem::create_directories(folder);
+    const std::vector<TriMesh> sequence = make_vine_frames(options, *frames);
+    WriteOptions write_options;
+    write_options.binary = !common->ascii;
+    for (size_t k = 0; k < sequence.size(); ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%04zu", k);
+      write_mesh(sequence[k], folder / (name + common->output.extension().string()), write_options);
+    }
+    std::cout << "wrote " << sequence.size() << " frames to " << folder.string() << "\n";
+  });
+}
+
 void add_nuts(CLI::App* parent, const std::shared_ptr<Common>& common) {
-  auto* cmd = parent->add_subcommand("nuts", "hex nuts (genus 1) at varied rotations in one layer, not touching");
+  auto* cmd =
+      parent->add_subcommand("nuts", "hex nuts (genus 1) at varied rotations in one layer, not touching");
   add_common(cmd, *common, true);
   auto b = std::make_shared<Binder<NutOptions>>();
   b->add(cmd, "--columns", &NutOptions::columns, "nuts per row");
@@ -198,21 +248,26 @@ void add_nuts(CLI::App* parent, const std::shared_ptr<Common>& common) {
 }
 
 void add_heightfield(CLI::App* parent, const std::shared_ptr<Common>& common) {
-  auto* cmd = parent->add_subcommand("heightfield", "a relief from a grayscale image (PGM/PBM/PPM): closed slab or open sheet");
+  auto* cmd = parent->add_subcommand(
+      "heightfield", "a relief from a grayscale image (PGM/PBM/PPM): closed slab or open sheet");
   add_common(cmd, *common, false);
   auto image = std::make_shared<std::filesystem::path>();
   cmd->add_option("--image", *image, "height image (white high); default: a built-in egg-crate relief");
   auto b = std::make_shared<Binder<HeightfieldOptions>>();
-  b->add(cmd, "--resolution", &HeightfieldOptions::builtin_resolution, "pixels a side of the built-in relief");
-  b->add(cmd, "--max-resolution", &HeightfieldOptions::max_resolution, "longer side is box-filtered down to this many pixels");
+  b->add(cmd, "--resolution", &HeightfieldOptions::builtin_resolution,
+         "pixels a side of the built-in relief");
+  b->add(cmd, "--max-resolution", &HeightfieldOptions::max_resolution,
+         "longer side is box-filtered down to this many pixels");
   b->add(cmd, "--size", &HeightfieldOptions::size, "length of the longer side");
   b->add(cmd, "--height", &HeightfieldOptions::height, "relief height (white minus black)");
   b->add(cmd, "--base", &HeightfieldOptions::base, "slab thickness below black");
-  b->add(cmd, "--tiles", &HeightfieldOptions::tiles, "N x N separate tiles with a pixel of grout between them (default 1: one piece)");
+  b->add(cmd, "--tiles", &HeightfieldOptions::tiles,
+         "N x N separate tiles with a pixel of grout between them (default 1: one piece)");
   auto open = std::make_shared<bool>(false);
   cmd->add_flag("--open", *open, "the top sheet alone instead of a closed slab");
   cmd->callback([common, b, image, open] {
-    HeightfieldOptions options = b->resolve(common->preset == "small" ? HeightfieldOptions::small() : HeightfieldOptions{});
+    HeightfieldOptions options =
+        b->resolve(common->preset == "small" ? HeightfieldOptions::small() : HeightfieldOptions{});
     options.open = *open;
     if (!image->empty()) options.image = read_netpbm(*image);
     write(make_heightfield(options), *common);
@@ -223,8 +278,9 @@ void add_heightfield(CLI::App* parent, const std::shared_ptr<Common>& common) {
 // its table and then fails: the findings are the output, the error line their summary.
 void add_check(CLI::App* parent) {
   auto* cmd = parent->add_subcommand(
-      "check", "says whether a swatch file will quilt well: closed elements, none intersecting or cut by the "
-               "border, thin along z");
+      "check",
+      "says whether a swatch file will quilt well: closed elements, none intersecting or cut by the "
+      "border, thin along z");
   auto file = std::make_shared<std::filesystem::path>();
   cmd->add_option("FILE", *file, "swatch mesh to check (.ply .obj .off .stl)")->required();
   cmd->callback([file] {
@@ -233,27 +289,31 @@ void add_check(CLI::App* parent) {
     for (const std::string& finding : check.findings) std::cout << name << ": " << finding << "\n";
     if (!check.findings.empty()) {
       std::cout.flush();
-      throw Error(ErrorKind::swatch_unfit, name + ": will not quilt well (" + std::to_string(check.findings.size()) +
+      throw Error(ErrorKind::swatch_unfit, name + ": will not quilt well (" +
+                                               std::to_string(check.findings.size()) +
                                                (check.findings.size() == 1 ? " problem)" : " problems)"));
     }
     std::ostringstream ratio;
     ratio << std::fixed << std::setprecision(2) << check.thickness_ratio;
-    std::cout << name << ": fine: " << check.elements << (check.elements == 1 ? " closed element" : " closed elements")
-              << ", thickness " << ratio.str()
-              << " x the shorter x-y side\n";
+    std::cout << name << ": fine: " << check.elements
+              << (check.elements == 1 ? " closed element" : " closed elements") << ", thickness "
+              << ratio.str() << " x the shorter x-y side\n";
   });
 }
 
 }  // namespace
 
 void add_swatch_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("swatch", "writes a built-in swatch (chainmail, weave, wire, fruit, nuts, heightfield) or checks one (check)");
+  auto* cmd = app.add_subcommand("swatch",
+                                 "writes a built-in swatch (chainmail, weave, wire, fruit, vine, nuts, "
+                                 "heightfield) or checks one (check)");
   cmd->require_subcommand(1);
   auto common = std::make_shared<Common>();
   add_chainmail(cmd, common);
   add_weave(cmd, common);
   add_wire(cmd, common);
   add_fruit(cmd, common);
+  add_vine(cmd, common);
   add_nuts(cmd, common);
   add_heightfield(cmd, common);
   add_check(cmd);

@@ -268,12 +268,16 @@ void run_synth(const SynthArgs& args) {
   };
   SynthResult synth = curved ? synth_curved(args, swatch, base, constraints, *device, common)
                              : synth_planar(swatch, width, height, *device, common);
-  const TriMesh& result = synth.mesh;
+  TriMesh& result = synth.mesh;
   nlohmann::json& summary = synth.summary;
 
   const auto write_start = Clock::now();
   check_interrupted();
+  // Provenance goes into the texture file always, into the mesh only when asked.
+  std::vector<int32_t> origins;
+  if (!args.provenance) origins.swap(result.origins);
   write_mesh(result, output, WriteOptions{.cancel = &interrupt_token()});
+  if (!args.provenance) origins.swap(result.origins);
   if (!args.write_texture.empty())
     write_texture_file(args.write_texture, make_quilt_texture(base, result, synth.local, synth.shell_texture));
   if (!args.preview.empty()) write_synth_preview(result, curved ? &base : nullptr, args.preview);

@@ -31,9 +31,11 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
   cmd->add_flag("!--no-distortion-min", args.distortion_min, "with --embed shell: keep the original shell map");
   cmd->add_option("--write-texture", args.write_texture,
                   "with --base: write the result in texture space, for `meshquilt embed` over an edited base");
+  cmd->add_flag("--provenance", args.provenance,
+                "write each vertex's swatch vertex as the PLY vertex property `origin` (glTF `_ORIGIN`)");
   cmd->add_option("--preview", args.preview, "write a PNG preview of the result (oblique, elements coloured)");
   add_max_memory_option(cmd);
-  cmd->add_option("-o,--output", args.output, "output mesh (.ply with element ids, .obj with groups, .off, .stl)")
+  cmd->add_option("-o,--output", args.output, "output mesh (.ply with element ids, .obj with groups, .off, .stl, .glb)")
       ->capture_default_str();
 }
 

@@ -35,6 +35,7 @@ PlacedTexture place_texture(const QuiltTexture& texture, const TriMesh& base, co
   placed.mesh.triangles = texture.triangles;
   placed.mesh.elements = texture.elements;
   placed.mesh.sources = texture.sources;
+  placed.mesh.origins = texture.origins;
   return placed;
 }
 

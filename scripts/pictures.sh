@@ -32,6 +32,22 @@ picture heightfield oblique heightfield --tiles 4
 
 # Curved, from ../shared when it is there: the bunny in chain mail and in a weave along a field.
 bunny=../shared/data/meshes/bunny.off
+# Editing (the paper's Figure 9) and a swatch animation.
+"$meshquilt" swatch weave --preset small -o "$work/weave_small.ply" >/dev/null
+"$meshquilt" synth --swatch "$work/weave_small.ply" --plane 3x3 --backend cpu --progress none -o "$work/wicker.ply" >/dev/null
+"$meshquilt" edit "$work/wicker.ply" -o "$work/wicker_colour.ply" --color-by source --palette b5651d,e8c07a,8b4513,d2a56d >/dev/null
+"$meshquilt" edit "$work/wicker.ply" -o "$work/wicker_aged.ply" --age 0.1 --seed 3 --color-by source \
+  --palette b5651d,e8c07a,8b4513,d2a56d >/dev/null
+"$meshquilt" render "$work/wicker_colour.ply" --mode colors --size 640x480 -o docs/images/edit_before.png
+"$meshquilt" render "$work/wicker_aged.ply" --mode colors --size 640x480 -o docs/images/edit_aged.png
+"$meshquilt" swatch vine --frames 12 -o "$work/vine.ply" >/dev/null
+"$meshquilt" synth --swatch "$work/vine.ply" --plane 3x3 --provenance --backend cpu --progress none -o "$work/vines.ply" >/dev/null
+"$meshquilt" animate --quilt "$work/vines.ply" --swatch "$work/vine.ply" --swatch-frames "$work/vine_frames" \
+  -o "$work/vine_out" >/dev/null
+for k in 00 03 06 09; do
+  "$meshquilt" render "$work/vine_out/frame_00$k.ply" --view front --size 320x240 -o "docs/images/vine_frame_$k.png"
+done
+
 if [ -f "$bunny" ]; then
   "$meshquilt" swatch chainmail --preset small -o "$work/chain.ply" >/dev/null
   "$meshquilt" swatch weave --preset small -o "$work/weave.ply" >/dev/null

@@ -126,6 +126,7 @@ TriMesh keep_faces(const TriMesh& mesh, const std::vector<uint8_t>& keep) {
     index[v] = static_cast<int32_t>(out.positions.size());
     out.positions.push_back(mesh.positions[v]);
     if (!mesh.colors.empty()) out.colors.push_back(mesh.colors[v]);
+    if (!mesh.origins.empty()) out.origins.push_back(mesh.origins[v]);
   }
   for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     if (!keep[f]) continue;

@@ -58,7 +58,7 @@ std::vector<uint8_t> faces_kept(const std::vector<int32_t>& face_elements,
                                 const std::vector<int32_t>& removed);
 
 //! `mesh` with only the faces in `keep`, its vertices renumbered in their old order; elements,
-//! sources and colours follow.
+//! sources, colours and origins follow.
 TriMesh keep_faces(const TriMesh& mesh, const std::vector<uint8_t>& keep);
 
 //! What to colour by.

@@ -16,6 +16,7 @@ QuiltTexture keep_texture_faces(const QuiltTexture& texture, const std::vector<u
     if (index[v] < 0) continue;
     index[v] = static_cast<int32_t>(out.vertices.size());
     out.vertices.push_back(texture.vertices[v]);
+    if (!texture.origins.empty()) out.origins.push_back(texture.origins[v]);
   }
   for (size_t f = 0; f < texture.triangles.size(); ++f) {
     if (!keep[f]) continue;

@@ -71,10 +71,12 @@ TriMesh compact(const TriMesh& mesh, const std::vector<Tri>& triangles, const st
     for (int32_t v : triangles[f]) remap[v] = 0;
   }
   int32_t next = 0;
+  const bool with_origins = mesh.origins.size() == mesh.positions.size() && !mesh.origins.empty();
   for (size_t v = 0; v < remap.size(); ++v) {
     if (remap[v] < 0) continue;
     remap[v] = next++;
     out.positions.push_back(mesh.positions[v]);
+    if (with_origins) out.origins.push_back(mesh.origins[v]);
   }
   const bool with_elements = !mesh.elements.empty();
   const bool with_sources = mesh.sources.size() == mesh.triangles.size();
@@ -194,6 +196,7 @@ std::vector<TriMesh> split_elements(const TriMesh& mesh) {
     for (size_t k = 0; k < used.size(); ++k) {
       remap[used[k]] = static_cast<int32_t>(k);
       part.positions.push_back(mesh.positions[used[k]]);
+      if (!mesh.origins.empty()) part.origins.push_back(mesh.origins[used[k]]);
     }
     part.triangles.reserve(faces_of[i].size());
     for (int32_t f : faces_of[i]) {
@@ -214,9 +217,16 @@ TriMesh join_elements(const std::vector<TriMesh>& parts) {
   out.positions.reserve(num_vertices);
   out.triangles.reserve(num_faces);
   out.elements.reserve(num_faces);
+  const bool with_origins = std::any_of(parts.begin(), parts.end(), [](const TriMesh& p) { return !p.origins.empty(); });
   for (size_t i = 0; i < parts.size(); ++i) {
     const auto offset = static_cast<int32_t>(out.positions.size());
     out.positions.insert(out.positions.end(), parts[i].positions.begin(), parts[i].positions.end());
+    if (with_origins) {
+      if (parts[i].origins.size() == parts[i].positions.size())
+        out.origins.insert(out.origins.end(), parts[i].origins.begin(), parts[i].origins.end());
+      else
+        out.origins.insert(out.origins.end(), parts[i].positions.size(), -1);
+    }
     for (const Tri& t : parts[i].triangles) out.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
     out.elements.insert(out.elements.end(), parts[i].triangles.size(), static_cast<int32_t>(i));
   }

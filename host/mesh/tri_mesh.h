@@ -21,12 +21,16 @@ using Tri = std::array<int32_t, 3>;
 //! sources    #F index of the swatch element each face was copied from, or empty (quilted
 //!            outputs carry it, so the wefts of a weave can be told from its warps)
 //! colors     #V RGB per vertex, or empty (set by `meshquilt edit`; PLY and glTF keep them)
+//! origins    #V index of the swatch vertex (in the swatch file's order) each vertex was copied
+//!            from, or empty: carried through deformation, merging and stitching (a seam vertex
+//!            welded from two takes the first part's), so swatch animations can follow it
 struct TriMesh {
   std::vector<Vec3> positions;
   std::vector<Tri> triangles;
   std::vector<int32_t> elements;
   std::vector<int32_t> sources;
   std::vector<std::array<uint8_t, 3>> colors;
+  std::vector<int32_t> origins;
 
   size_t num_vertices() const { return positions.size(); }
   size_t num_faces() const { return triangles.size(); }

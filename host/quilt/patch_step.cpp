@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <functional>
 #include <unordered_set>
 
@@ -255,7 +256,13 @@ std::vector<TriMesh> without_cut_elements(std::vector<TriMesh> elements, int& cu
 
 QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
   QuiltSwatch swatch;
-  swatch.mesh = orient_swatch(input, name);
+  TriMesh numbered = input;
+  // Every output vertex will name the swatch vertex it was copied from, in the file's order.
+  if (numbered.origins.size() != numbered.positions.size()) {
+    numbered.origins.resize(numbered.positions.size());
+    std::iota(numbered.origins.begin(), numbered.origins.end(), 0);
+  }
+  swatch.mesh = orient_swatch(numbered, name);
   swatch.elements = without_cut_elements(split_elements(swatch.mesh), swatch.cut_elements);
   if (swatch.cut_elements > 0) {
     swatch.mesh = orient_swatch(join_elements(swatch.elements), name);

@@ -12,7 +12,8 @@
 namespace meshquilt {
 namespace {
 
-constexpr char kMagic[] = "MQTEXTURE1\n";
+constexpr char kMagic[] = "MQTEXTURE2\n";
+constexpr char kMagicVersion1[] = "MQTEXTURE1\n";  // read still: no origins
 constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
 
 uint64_t fnv1a(const void* data, size_t bytes, uint64_t hash = 0xcbf29ce484222325ull) {
@@ -93,6 +94,7 @@ QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh,
   t.triangles = mesh.triangles;
   t.elements = mesh.elements;
   t.sources = mesh.sources;
+  t.origins = mesh.origins;
   return t;
 }
 
@@ -130,6 +132,9 @@ void write_texture_file(const std::filesystem::path& file, const QuiltTexture& t
   sources.resize(t.triangles.size(), -1);
   w.put_all(elements);
   w.put_all(sources);
+  std::vector<int32_t> origins = t.origins;
+  origins.resize(t.vertices.size(), -1);
+  w.put_all(origins);
   w.put(fnv1a(w.bytes().data(), w.bytes().size()));
   write_file_atomic(file, w.bytes());
 }
@@ -143,8 +148,9 @@ QuiltTexture read_texture_file(const std::filesystem::path& file) {
 
 QuiltTexture parse_texture(const std::string& bytes, const std::string& name) {
   Reader r(bytes, name);
-  if (bytes.size() < kMagicBytes || bytes.compare(0, kMagicBytes, kMagic) != 0)
-    r.fail("not a meshquilt texture file (no MQTEXTURE1 header)");
+  const bool version2 = bytes.size() >= kMagicBytes && bytes.compare(0, kMagicBytes, kMagic) == 0;
+  if (!version2 && (bytes.size() < kMagicBytes || bytes.compare(0, kMagicBytes, kMagicVersion1) != 0))
+    r.fail("not a meshquilt texture file (no MQTEXTURE2 or MQTEXTURE1 header)");
   if (bytes.size() < kMagicBytes + 8) r.fail("truncated");
   uint64_t stored = 0;
   std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
@@ -181,6 +187,7 @@ QuiltTexture parse_texture(const std::string& bytes, const std::string& name) {
   t.triangles = r.get_all<Tri>(faces);
   t.elements = r.get_all<int32_t>(faces);
   t.sources = r.get_all<int32_t>(faces);
+  if (version2) t.origins = r.get_all<int32_t>(vertices);
   if (r.at() + 8 != bytes.size()) r.fail(r.at() + 8 < bytes.size() ? "trailing bytes" : "truncated");
   if (!intact) r.fail("checksum mismatch (corrupt or truncated)");
 
@@ -205,6 +212,8 @@ QuiltTexture parse_texture(const std::string& bytes, const std::string& name) {
   for (const Tri& tri : t.triangles)
     for (int32_t v : tri)
       if (v < 0 || static_cast<uint32_t>(v) >= vertices) r.fail("face index out of range");
+  for (int32_t o : t.origins)
+    if (o < -1) r.fail("vertex origin out of range");
   return t;
 }
 

@@ -3,8 +3,8 @@
 //! edited base without synthesizing again (Section 3.2 of the mesh quilting paper, last
 //! paragraph).
 //!
-//! Format (binary, little-endian; version 1):
-//!   "MQTEXTURE1\n"                                      11 bytes
+//! Format (binary, little-endian; version 2; version 1, without origins, is still read):
+//!   "MQTEXTURE2\n"                                      11 bytes ("MQTEXTURE1\n" for version 1)
 //!   u32 base_vertices, base_faces; u64 base_connectivity (FNV-1a of the base's triangles)
 //!   f64 shell_height (0: the layer was embedded by normal displacement; no atlas follows)
 //!   u32 charts, atlas_vertices, vertices, faces
@@ -13,6 +13,7 @@
 //!          all absent when shell_height is 0)
 //!   vertices: per vertex i32 base_face, f64 b1, f64 b2, f64 height
 //!   faces: i32 triangles[3 faces], i32 elements[faces], i32 sources[faces]
+//!   origins: i32 origin[vertices]  (version 2: the swatch vertex each vertex came from, -1 unknown)
 //!   u64 FNV-1a of every byte before it
 //! A vertex is the base point with barycentrics (1 - b1 - b2, b1, b2) in base_face, `height` above
 //! it in base units.
@@ -33,6 +34,7 @@ struct QuiltTexture {
   std::vector<LocalVertex> vertices;
   std::vector<Tri> triangles;
   std::vector<int32_t> elements, sources;
+  std::vector<int32_t> origins;  //!< #vertices swatch vertex per vertex (TriMesh::origins); empty from version 1
 };
 
 //! FNV-1a over the triangles' vertex indices: the connectivity a texture belongs to.

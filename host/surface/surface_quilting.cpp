@@ -24,6 +24,7 @@ namespace {
 
 struct SurfaceElement {
   std::vector<LocalVertex> vertices;
+  std::vector<int32_t> origins;  // the swatch vertex of each vertex (TriMesh::origins), or empty
   std::vector<Tri> triangles;
   int32_t source = -1;
   Box3 bounds;  // of the base points under it, for culling
@@ -235,6 +236,7 @@ class SurfaceDriver {
             index = static_cast<int32_t>(plane.mesh.positions.size());
             const LocalVertex& lv = element.vertices[t[k]];
             plane.mesh.positions.push_back(Vec3(patch.to_plane(lv.point), lv.height / height_unit_));
+            if (!element.origins.empty()) plane.mesh.origins.push_back(element.origins[t[k]]);
             part.element_vertex.push_back(t[k]);
           }
           local[k] = index;
@@ -330,6 +332,7 @@ class SurfaceDriver {
         SurfaceElement added;
         added.source = plane.source;
         for (const Vec3& p : plane.mesh.positions) added.vertices.push_back(to_local(p));
+        added.origins = plane.mesh.origins;
         added.triangles = plane.mesh.triangles;
         update_bounds(added, base_);
         elements_.push_back(std::move(added));
@@ -355,11 +358,13 @@ class SurfaceDriver {
     for (size_t k = 0; k < part.element_vertex.size(); ++k) unmoved.emplace(part.plane_positions[k], part.element_vertex[k]);
     SurfaceElement result;
     result.source = plane.source;
+    const bool with_origins = !element.origins.empty() || !plane.mesh.origins.empty();
     std::vector<int32_t> kept_index(element.vertices.size(), -1);
     const auto keep = [&](int32_t v) {
       if (kept_index[v] < 0) {
         kept_index[v] = static_cast<int32_t>(result.vertices.size());
         result.vertices.push_back(element.vertices[v]);
+        if (with_origins) result.origins.push_back(v < static_cast<int32_t>(element.origins.size()) ? element.origins[v] : -1);
       }
       return kept_index[v];
     };
@@ -376,6 +381,7 @@ class SurfaceDriver {
       } else {
         new_index[k] = static_cast<int32_t>(result.vertices.size());
         result.vertices.push_back(to_local(plane.mesh.positions[k]));
+        if (with_origins) result.origins.push_back(k < plane.mesh.origins.size() ? plane.mesh.origins[k] : -1);
       }
     }
     for (const Tri& t : plane.mesh.triangles) result.triangles.push_back({new_index[t[0]], new_index[t[1]], new_index[t[2]]});
@@ -410,6 +416,7 @@ class SurfaceDriver {
       next += elements_[e].vertices.size();
       mesh.positions.assign(begin, placement.positions.begin() + static_cast<std::ptrdiff_t>(next));
       mesh.triangles = elements_[e].triangles;
+      mesh.origins = elements_[e].origins;
     }
     return embedded;
   }

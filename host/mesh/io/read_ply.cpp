@@ -269,6 +269,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
     const bool is_face = element.name == "face";
     int ix = -1, iy = -1, iz = -1, iindices = -1, ielement = -1, isource = -1;
     int icolor[3] = {-1, -1, -1};
+    int iorigin = -1;
     bool has_colors = false;
     if (is_vertex) {
       ix = find_property(element, {"x"});
@@ -283,6 +284,8 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
       icolor[2] = find_property(element, {"blue", "b"});
       has_colors = icolor[0] >= 0 && icolor[1] >= 0 && icolor[2] >= 0 && !element.properties[icolor[0]].is_list &&
                    !element.properties[icolor[1]].is_list && !element.properties[icolor[2]].is_list;
+      iorigin = find_property(element, {"origin"});
+      if (iorigin >= 0 && element.properties[iorigin].is_list) iorigin = -1;
       mesh.positions.reserve(static_cast<size_t>(std::min(element.count, bound)));
       if (has_colors) mesh.colors.reserve(static_cast<size_t>(std::min(element.count, bound)));
       seen_vertices = true;
@@ -302,6 +305,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
     for (int64_t item = 0; item < element.count; ++item) {
       Vec3 p(0.0);
       std::array<uint8_t, 3> color{0, 0, 0};
+      int32_t origin = -1;
       int32_t element_id = 0, source_id = 0;
       for (size_t k = 0; k < element.properties.size(); ++k) {
         const PlyProperty& property = element.properties[k];
@@ -312,6 +316,8 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
           if (index == ix) p.x = value;
           if (index == iy) p.y = value;
           if (index == iz) p.z = value;
+          if (index == iorigin && value >= -1.0 && value <= std::numeric_limits<int32_t>::max())
+            origin = static_cast<int32_t>(value);
           for (int c = 0; c < 3 && has_colors; ++c)
             if (index == icolor[c]) {
               // Float colours are in [0, 1]; integer ones in [0, 255].
@@ -355,6 +361,7 @@ void read_ply_body(Reader& reader, const PlyHeader& header, TriMesh& mesh, bool&
       if (is_vertex) {
         mesh.positions.push_back(p);
         if (has_colors) mesh.colors.push_back(color);
+        if (iorigin >= 0) mesh.origins.push_back(origin);
       } else if (is_face) {
         const size_t before = mesh.triangles.size();
         push_fan(mesh.triangles, polygon);

@@ -1,7 +1,7 @@
 //! Writing binary glTF 2.0 (.glb): one mesh, one triangle primitive, with the element and source
 //! of each face as the custom vertex attributes _ELEMENT and _SOURCE (float scalars: glTF allows
 //! unsigned ints for indices only, and floats hold ids below 2^24 exactly) and vertex colours as
-//! COLOR_0. A vertex whose faces differ in element or source is split, so each face's three
+//! COLOR_0, and each vertex's swatch vertex as _ORIGIN where the mesh has them. A vertex whose faces differ in element or source is split, so each face's three
 //! corners carry its own ids.
 
 #include <algorithm>
@@ -98,6 +98,11 @@ std::string format_glb(const TriMesh& mesh) {
     begin = bin.size();
     for (const auto& [v, e, s] : corners) append_raw(bin, static_cast<float>(e));
     attributes["_ELEMENT"] = add_accessor(add_view(begin, kArrayBuffer), kFloat, corners.size(), "SCALAR");
+  }
+  if (mesh.origins.size() == mesh.positions.size() && !mesh.origins.empty()) {
+    begin = bin.size();
+    for (const auto& [v, e, s] : corners) append_raw(bin, static_cast<float>(mesh.origins[v]));
+    attributes["_ORIGIN"] = add_accessor(add_view(begin, kArrayBuffer), kFloat, corners.size(), "SCALAR");
   }
   if (with_sources) {
     begin = bin.size();

@@ -1,5 +1,5 @@
 //! Writing PLY, binary little endian or ASCII, with face properties `element` and `source` and,
-//! when the mesh has them, vertex colours `red green blue` (uchar).
+//! when the mesh has them, vertex colours `red green blue` (uchar) and swatch vertices `origin`.
 
 #include "mesh/io/formats.h"
 
@@ -22,6 +22,8 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
   out += "\nproperty double x\nproperty double y\nproperty double z\n";
   const bool with_colors = !mesh.colors.empty() && mesh.colors.size() == mesh.positions.size();
   if (with_colors) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  const bool with_origins = !mesh.origins.empty() && mesh.origins.size() == mesh.positions.size();
+  if (with_origins) out += "property int origin\n";
   out += "element face ";
   append_int(out, static_cast<int64_t>(mesh.triangles.size()));
   out += "\nproperty list uchar int vertex_indices\n";
@@ -37,6 +39,7 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
       append_binary(out, p.z, true);
       if (with_colors)
         for (uint8_t c : mesh.colors[v]) out += static_cast<char>(c);
+      if (with_origins) append_binary(out, mesh.origins[v], true);
     } else {
       append_vec(out, p);
       if (with_colors)
@@ -44,6 +47,10 @@ std::string format_ply(const TriMesh& mesh, bool binary) {
           out += ' ';
           append_int(out, c);
         }
+      if (with_origins) {
+        out += ' ';
+        append_int(out, mesh.origins[v]);
+      }
       out += '\n';
     }
   }

@@ -132,6 +132,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance) {
     if (vertex_map[v] == 0) {
       vertex_map[v] = static_cast<int32_t>(compact.positions.size());
       compact.positions.push_back(layer.positions[v]);
+      if (!layer.origins.empty()) compact.origins.push_back(layer.origins[v]);
     }
   std::vector<int32_t> renumbered(static_cast<size_t>(element_count), -1);
   int32_t next_element = 0;

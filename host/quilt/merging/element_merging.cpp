@@ -127,6 +127,7 @@ MergeResult whole(const TriMesh& m, MergeOutcome outcome, std::string why = {}) 
   r.outcome = outcome;
   r.element.positions = m.positions;
   r.element.triangles = m.triangles;
+  r.element.origins = m.origins;
   r.fallback = std::move(why);
   return r;
 }

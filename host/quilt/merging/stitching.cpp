@@ -41,6 +41,7 @@ TriMesh extract(const TriMesh& mesh, const std::vector<uint8_t>& keep, std::vect
       if (m < 0) {
         m = static_cast<int32_t>(part.positions.size());
         part.positions.push_back(mesh.positions[mesh.triangles[f][k]]);
+        if (!mesh.origins.empty()) part.origins.push_back(mesh.origins[mesh.triangles[f][k]]);
       }
       t[k] = m;
     }
@@ -229,6 +230,7 @@ std::vector<Vec3> deform_seam_band(const TriMesh& part, const std::vector<Vertex
 //! then second-part vertices, seam vertices moved onto the averaged seam.
 struct WeldedSeam {
   std::vector<Vec3> positions;                   //!< first part's #V then second part's #V
+  std::vector<int32_t> origins;                  //!< likewise, when both parts have them
   std::vector<int32_t> first_ids, second_ids;    //!< part vertex -> id in `positions`
   //! boundary face of a part -> ids inserted on its loop half-edge, in seam order
   std::unordered_map<int32_t, std::vector<int32_t>> first_splits, second_splits;
@@ -243,6 +245,10 @@ std::string weld_seam(const SeamSide& first, const SeamSide& second, const std::
   const int32_t first_count = static_cast<int32_t>(first.part.num_vertices());
   seam.positions = first_x;
   seam.positions.insert(seam.positions.end(), second_x.begin(), second_x.end());
+  if (!first.part.origins.empty() && !second.part.origins.empty()) {
+    seam.origins = first.part.origins;
+    seam.origins.insert(seam.origins.end(), second.part.origins.begin(), second.part.origins.end());
+  }
   seam.first_ids.resize(first.part.num_vertices());
   std::iota(seam.first_ids.begin(), seam.first_ids.end(), 0);
   seam.second_ids.resize(second.part.num_vertices());
@@ -480,8 +486,11 @@ StitchResult stitch_parts(const TriMesh& a, const std::vector<uint8_t>& keep_a, 
   TriMesh result;
   for (Tri& t : faces.triangles)
     for (int32_t& v : t) {
-      if (compact_id[v] < 0)
-        compact_id[v] = static_cast<int32_t>(result.positions.size()), result.positions.push_back(seam.positions[v]);
+      if (compact_id[v] < 0) {
+        compact_id[v] = static_cast<int32_t>(result.positions.size());
+        result.positions.push_back(seam.positions[v]);
+        if (!seam.origins.empty()) result.origins.push_back(seam.origins[v]);
+      }
       v = compact_id[v];
     }
   result.triangles = std::move(faces.triangles);
