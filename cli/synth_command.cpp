@@ -33,7 +33,7 @@
 #include "shell/shell_embedding.h"
 #include "shell/texture_file.h"
 #include "render_command.h"
-#include "default_swatch.h"
+#include "swatch/default_swatch.h"
 
 namespace meshquilt::cli {
 namespace {

@@ -18,7 +18,7 @@ command -v clang++-14 >/dev/null || { echo "fuzz.sh: clang++-14 missing (apt-get
 # targets (no Vulkan: the readers never reach the device).
 sanitize="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DMESHQUILT_FUZZ=ON -DMESHQUILT_TESTS=OFF -DMESHQUILT_PERF=OFF -DMESHQUILT_VULKAN=OFF \
+  -DMESHQUILT_FUZZ=ON -DMESHQUILT_TESTS=OFF -DMESHQUILT_PERF=OFF -DMESHQUILT_VULKAN=OFF -DMESHQUILT_PYTHON=OFF \
   -DCMAKE_CXX_FLAGS="$sanitize -fsanitize=fuzzer-no-link" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 # The build's own messages only on failure (a link error must be visible in CI's log).

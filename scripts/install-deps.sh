@@ -13,9 +13,11 @@ packages=(
   slurm-wlm munge
 )
 # With --tests, what only the tests need: tests/foreign/make_swatches.py builds foreign swatches
-# with numpy (the build and every job run without it).
+# with numpy, and the Python module (built when pybind11 is there) is tested with pytest and
+# installed with pip into a venv (the build and every job run without them).
 if [ "${1:-}" = "--tests" ]; then
-  packages+=(python3-numpy)
+  packages+=(python3-numpy python3-dev python3-pybind11 pybind11-dev python3-pytest python3-venv python3-pip
+             python3-setuptools python3-wheel)
 fi
 missing=()
 for p in "${packages[@]}"; do

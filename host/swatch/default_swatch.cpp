@@ -1,8 +1,8 @@
-#include "default_swatch.h"
+#include "swatch/default_swatch.h"
 
 #include "swatch/chainmail.h"
 
-namespace meshquilt::cli {
+namespace meshquilt {
 
 TriMesh default_swatch() {
   ChainmailOptions options;
@@ -13,4 +13,4 @@ TriMesh default_swatch() {
   return make_chainmail(options);
 }
 
-}  // namespace meshquilt::cli
+}  // namespace meshquilt

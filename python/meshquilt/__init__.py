@@ -1,0 +1,120 @@
+"""meshquilt: grows 3D geometric textures (chain mail, weaves, fruit, vines) over planes and
+triangle meshes by mesh quilting (Zhou et al. 2006), from Python, with numpy in and out.
+
+    import meshquilt
+    mail = meshquilt.swatch("chainmail", preset="small")
+    result = meshquilt.synth(mail, plane=(2, 2), seed=1)
+    result.vertices, result.faces, result.element, result.source, result.stats
+
+Errors raise meshquilt.Error with the command line's one-line message; a CancelToken passed as
+`cancel` stops a job between stages (meshquilt.Cancelled), and nothing half-made is returned.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _meshquilt
+from ._meshquilt import CancelToken, Cancelled, Error
+
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "inspect", "render", "edit"]
+
+
+@dataclass
+class Mesh:
+    """A triangle mesh: vertices (N, 3) float64, faces (M, 3) int32, and per face the element id
+    and (for quilted results) the swatch element it was copied from."""
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    element: Optional[np.ndarray] = None
+    source: Optional[np.ndarray] = None
+    origin: Optional[np.ndarray] = None
+
+
+@dataclass
+class Result(Mesh):
+    """A synthesized texture: the mesh and what the engine reports about it (`stats`)."""
+
+    stats: Dict[str, Any] = field(default_factory=dict)
+
+
+MeshLike = Union[Mesh, Tuple[Any, Any]]
+
+
+def _arrays(mesh: MeshLike, what: str) -> Tuple[np.ndarray, np.ndarray]:
+    if isinstance(mesh, Mesh):
+        vertices, faces = mesh.vertices, mesh.faces
+    else:
+        try:
+            vertices, faces = mesh
+        except (TypeError, ValueError):
+            raise TypeError(f"{what}: expected a Mesh or a (vertices, faces) pair") from None
+    vertices = np.ascontiguousarray(vertices, dtype=np.float64)
+    faces = np.ascontiguousarray(faces, dtype=np.int32)
+    return vertices, faces
+
+
+def _mesh(d: dict, cls=Mesh, **extra) -> Mesh:
+    return cls(vertices=d["vertices"], faces=d["faces"], element=d.get("element"), source=d.get("source"),
+               origin=d.get("origin"), **extra)
+
+
+def swatch(kind: str, preset: str = "default", seed: int = 1, **options: Any) -> Mesh:
+    """A built-in swatch: "chainmail", "weave" (pattern="plain" | "twill:M/N" | "satin:M/N"), "wire",
+    "fruit", "vine" or "nuts", with the options of `meshquilt swatch KIND` (underscores for dashes).
+    preset="small" gives test-sized swatches."""
+    return _mesh(_meshquilt.swatch(kind, preset, seed, **options))
+
+
+def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, float]] = None,
+          base: Optional[MeshLike] = None, scale: float = 0.1, seed: int = 1, backend: str = "auto",
+          cells: int = 16, cleanup: bool = True, symmetry: int = 0, shell_height: float = 0.0,
+          embed: str = "shell", per_patch_charts: bool = False,
+          progress: Optional[Callable[[float, float], None]] = None,
+          cancel: Optional[CancelToken] = None) -> Result:
+    """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
+    swatch extents, or over `base` at `scale` (the swatch's longer side over the base's bounding-box
+    diagonal), as `meshquilt synth` does with the same options: the same seed gives the same
+    vertices and faces. `progress(share, seconds_left)` is called after each patch (seconds_left is
+    -1 until something is covered); raising in it cancels the job. The engine runs without the GIL."""
+    if (plane is None) == (base is None):
+        raise TypeError("synth: give plane=(width, height) or base=(vertices, faces)")
+    sv = sf = bv = bf = None
+    if swatch is not None:
+        sv, sf = _arrays(swatch, "swatch")
+    if base is not None:
+        bv, bf = _arrays(base, "base")
+    d = _meshquilt.synth(sv, sf, None if plane is None else (float(plane[0]), float(plane[1])), bv, bf, scale, seed,
+                         backend, cells, cleanup, symmetry, shell_height, embed, per_patch_charts, progress, cancel)
+    return _mesh(d, Result, stats=d["stats"])
+
+
+def inspect(mesh: MeshLike) -> Dict[str, Any]:
+    """What `meshquilt inspect --json` reports: elements, closed ones, defects, intersecting pairs."""
+    vertices, faces = _arrays(mesh, "inspect")
+    element = getattr(mesh, "element", None)
+    return _meshquilt.inspect(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32))
+
+
+def render(mesh: MeshLike, path: str, width: int = 1024, height: int = 768, mode: str = "shaded") -> None:
+    """Writes a PNG preview as `meshquilt render` does (oblique view; mode "shaded" or "elements")."""
+    vertices, faces = _arrays(mesh, "render")
+    element = getattr(mesh, "element", None)
+    _meshquilt.render(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32), path,
+                      width, height, mode)
+
+
+def edit(mesh: Mesh, *, remove_elements: Sequence[int] = (), remove_sources: Sequence[int] = (),
+         keep_sources: Sequence[int] = (), age: float = 0.0, seed: int = 1) -> Mesh:
+    """Removes elements as `meshquilt edit` does (by id, by source, keeping some sources, or a share
+    at random with `age`); every other element stays exactly as it was."""
+    if mesh.element is None:
+        raise TypeError("edit: the mesh needs per-face element ids")
+    vertices, faces = _arrays(mesh, "edit")
+    source = None if mesh.source is None else np.ascontiguousarray(mesh.source, np.int32)
+    d = _meshquilt.edit(vertices, faces, np.ascontiguousarray(mesh.element, np.int32), source, list(remove_elements),
+                        list(remove_sources), list(keep_sources), age, seed)
+    return _mesh(d)

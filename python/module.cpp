@@ -1,0 +1,431 @@
+// The Python module meshquilt._meshquilt: the engine the CLI drives, with numpy in and out and no
+// files. meshquilt/__init__.py re-exports it with docstrings; meshquilt/__init__.pyi types it.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "core/error.h"
+#include "device.h"
+#include "edit/element_edit.h"
+#include "inspect/inspect_report.h"
+#include "mesh/atomic_write.h"
+#include "mesh/base_mesh.h"
+#include "mesh/swatch_frame.h"
+#include "mesh/topology.h"
+#include "quilt/planar_quilting.h"
+#include "render/png_encoding.h"
+#include "render/render_mesh.h"
+#include "shell/shell_embedding.h"
+#include "surface/guidance_field.h"
+#include "surface/surface_quilting.h"
+#include "swatch/chainmail.h"
+#include "swatch/default_swatch.h"
+#include "swatch/fruit.h"
+#include "swatch/nuts.h"
+#include "swatch/vine.h"
+#include "swatch/weave.h"
+#include "swatch/weave_pattern.h"
+
+namespace py = pybind11;
+using namespace meshquilt;
+
+namespace {
+
+using Array3d = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Array3i = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
+
+// The CLI's wording: an option named {name} in a message reads --name.
+std::string message_of(const Error& e) {
+  return Error::render(e.text(), [](std::string name) {
+    std::replace(name.begin(), name.end(), '_', '-');
+    return "--" + name;
+  });
+}
+
+TriMesh mesh_from(const Array3d& vertices, const Array3i& faces, const char* what) {
+  if (vertices.ndim() != 2 || vertices.shape(1) != 3)
+    throw InputError(std::string(what) + ": vertices must be an (N, 3) array", ErrorKind::invalid_mesh);
+  if (faces.ndim() != 2 || faces.shape(1) != 3)
+    throw InputError(std::string(what) + ": faces must be an (M, 3) array of vertex indices",
+                     ErrorKind::invalid_mesh);
+  TriMesh m;
+  const auto v = vertices.unchecked<2>();
+  const auto f = faces.unchecked<2>();
+  for (py::ssize_t i = 0; i < v.shape(0); ++i) m.positions.emplace_back(v(i, 0), v(i, 1), v(i, 2));
+  for (py::ssize_t i = 0; i < f.shape(0); ++i) {
+    const Tri t{f(i, 0), f(i, 1), f(i, 2)};
+    for (int32_t k : t)
+      if (k < 0 || static_cast<size_t>(k) >= m.positions.size())
+        throw InputError(std::string(what) + ": face " + std::to_string(i) + " indexes vertex " +
+                             std::to_string(k) + " of " + std::to_string(m.positions.size()),
+                         ErrorKind::invalid_mesh);
+    m.triangles.push_back(t);
+  }
+  return m;
+}
+
+py::dict dict_of(const TriMesh& m) {
+  py::array_t<double> vertices({static_cast<py::ssize_t>(m.num_vertices()), py::ssize_t{3}});
+  py::array_t<int32_t> faces({static_cast<py::ssize_t>(m.num_faces()), py::ssize_t{3}});
+  auto v = vertices.mutable_unchecked<2>();
+  auto f = faces.mutable_unchecked<2>();
+  for (size_t i = 0; i < m.num_vertices(); ++i)
+    for (int k = 0; k < 3; ++k) v(i, k) = m.positions[i][k];
+  for (size_t i = 0; i < m.num_faces(); ++i)
+    for (int k = 0; k < 3; ++k) f(i, k) = m.triangles[i][k];
+  py::dict out;
+  out["vertices"] = vertices;
+  out["faces"] = faces;
+  const auto ints = [](const std::vector<int32_t>& values) {
+    py::array_t<int32_t> a(static_cast<py::ssize_t>(values.size()));
+    std::copy(values.begin(), values.end(), a.mutable_data());
+    return a;
+  };
+  out["element"] = ints(m.elements.empty() ? face_components(m) : m.elements);
+  if (!m.sources.empty()) out["source"] = ints(m.sources);
+  if (!m.origins.empty()) out["origin"] = ints(m.origins);
+  return out;
+}
+
+py::object json_to_python(const nlohmann::json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+// Reads kwargs into an options struct: set(name, &Options::field) for each accepted name; any
+// name left over is refused with the list of accepted ones.
+template <class Options>
+class Kwargs {
+ public:
+  Kwargs(const py::kwargs& given, Options& options, std::string kind)
+      : given_(given), options_(options), kind_(std::move(kind)) {}
+  template <class T>
+  Kwargs& set(const char* name, T Options::*field) {
+    accepted_ += std::string(accepted_.empty() ? "" : ", ") + name;
+    if (given_.contains(name)) {
+      options_.*field = given_[name].template cast<T>();
+      used_.push_back(name);
+    }
+    return *this;
+  }
+  void done(std::initializer_list<const char*> also = {}) const {
+    for (const auto& item : given_) {
+      const std::string name = py::str(item.first);
+      if (std::find(used_.begin(), used_.end(), name) == used_.end() &&
+          std::find_if(also.begin(), also.end(), [&](const char* a) { return name == a; }) == also.end())
+        throw InputError("swatch " + kind_ + ": unknown option '" + name + "' (accepted: " + accepted_ + ")",
+                         ErrorKind::invalid_option);
+    }
+  }
+
+ private:
+  const py::kwargs& given_;
+  Options& options_;
+  std::string kind_, accepted_;
+  std::vector<std::string> used_;
+};
+
+TriMesh make_swatch(const std::string& kind, const std::string& preset, uint64_t seed,
+                    const py::kwargs& kwargs) {
+  const bool small = preset == "small";
+  if (preset != "small" && preset != "default")
+    throw InputError("--preset: expected default or small, got '" + preset + "'", ErrorKind::invalid_option);
+  if (kind == "chainmail") {
+    ChainmailOptions o = small ? ChainmailOptions::small() : ChainmailOptions{};
+    Kwargs<ChainmailOptions>(kwargs, o, kind)
+        .set("rows", &ChainmailOptions::rows)
+        .set("columns", &ChainmailOptions::columns)
+        .set("ring_radius", &ChainmailOptions::ring_radius)
+        .set("wire_radius", &ChainmailOptions::wire_radius)
+        .set("pitch_x", &ChainmailOptions::pitch_x)
+        .set("pitch_y", &ChainmailOptions::pitch_y)
+        .set("tilt_degrees", &ChainmailOptions::tilt_degrees)
+        .set("ring_segments", &ChainmailOptions::ring_segments)
+        .set("wire_segments", &ChainmailOptions::wire_segments)
+        .done();
+    return make_chainmail(o);
+  }
+  if (kind == "weave" || kind == "wire") {
+    WeaveOptions o = kind == "wire" ? (small ? WeaveOptions::small_wire() : WeaveOptions::wire())
+                                    : (small ? WeaveOptions::small() : WeaveOptions{});
+    if (kwargs.contains("pattern")) o.pattern = parse_weave_pattern(kwargs["pattern"].cast<std::string>());
+    Kwargs<WeaveOptions>(kwargs, o, kind)
+        .set("warps", &WeaveOptions::warps)
+        .set("wefts", &WeaveOptions::wefts)
+        .set("pitch", &WeaveOptions::pitch)
+        .set("yarn_radius", &WeaveOptions::yarn_radius)
+        .set("amplitude", &WeaveOptions::amplitude)
+        .set("segments_per_pitch", &WeaveOptions::segments_per_pitch)
+        .set("sides", &WeaveOptions::sides)
+        .done({"pattern"});
+    return make_weave(o);
+  }
+  if (kind == "fruit") {
+    FruitOptions o = small ? FruitOptions::small() : FruitOptions{};
+    o.seed = seed;
+    Kwargs<FruitOptions>(kwargs, o, kind)
+        .set("columns", &FruitOptions::columns)
+        .set("rows", &FruitOptions::rows)
+        .set("radius", &FruitOptions::radius)
+        .set("size_variation", &FruitOptions::size_variation)
+        .set("gap", &FruitOptions::gap)
+        .set("subdivisions", &FruitOptions::subdivisions)
+        .done();
+    return make_fruit(o);
+  }
+  if (kind == "vine") {
+    VineOptions o = small ? VineOptions::small() : VineOptions{};
+    o.seed = seed;
+    Kwargs<VineOptions>(kwargs, o, kind)
+        .set("columns", &VineOptions::columns)
+        .set("rows", &VineOptions::rows)
+        .set("spacing", &VineOptions::spacing)
+        .set("height", &VineOptions::height)
+        .set("radius", &VineOptions::radius)
+        .set("curl", &VineOptions::curl)
+        .set("sway", &VineOptions::sway)
+        .set("segments", &VineOptions::segments)
+        .set("sides", &VineOptions::sides)
+        .done();
+    return make_vine(o);
+  }
+  if (kind == "nuts") {
+    NutOptions o = small ? NutOptions::small() : NutOptions{};
+    o.seed = seed;
+    Kwargs<NutOptions>(kwargs, o, kind)
+        .set("columns", &NutOptions::columns)
+        .set("rows", &NutOptions::rows)
+        .set("across_flats", &NutOptions::across_flats)
+        .set("hole_radius", &NutOptions::hole_radius)
+        .set("thickness", &NutOptions::thickness)
+        .set("gap", &NutOptions::gap)
+        .done();
+    return make_nuts(o);
+  }
+  throw InputError("swatch: unknown kind '" + kind + "' (chainmail, weave, wire, fruit, vine, nuts)",
+                   ErrorKind::invalid_option);
+}
+
+// Runs `work` without the GIL; a progress callback that raises cancels the job and its error is
+// raised here.
+struct Job {
+  CancelToken own_token;
+  CancelToken* token = &own_token;
+  std::exception_ptr callback_error;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_meshquilt, m) {
+  m.doc() = "meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting";
+  static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
+  static py::exception<Cancelled> cancelled(m, "Cancelled", error.ptr());
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const Cancelled& e) {
+      cancelled("cancelled");
+    } catch (const Error& e) {
+      error(message_of(e).c_str());
+    }
+  });
+
+  py::class_<CancelToken>(m, "CancelToken", "Cancels a running job between stages; the job raises Cancelled.")
+      .def(py::init<>())
+      .def("cancel", &CancelToken::cancel, "Asks the job to stop.")
+      .def_property_readonly("cancelled", &CancelToken::cancelled);
+
+  m.def(
+      "swatch",
+      [](const std::string& kind, const std::string& preset, uint64_t seed, const py::kwargs& kwargs) {
+        return dict_of(make_swatch(kind, preset, seed, kwargs));
+      },
+      py::arg("kind"), py::arg("preset") = "default", py::arg("seed") = 1);
+
+  m.def("default_swatch", [] { return dict_of(default_swatch()); });
+
+  m.def(
+      "synth",
+      [](std::optional<Array3d> swatch_vertices, std::optional<Array3i> swatch_faces,
+         std::optional<std::pair<double, double>> plane, std::optional<Array3d> base_vertices,
+         std::optional<Array3i> base_faces, double scale, uint64_t seed, const std::string& backend,
+         int cells, bool cleanup, int symmetry, double shell_height, const std::string& embed,
+         bool per_patch_charts, std::optional<py::function> progress, CancelToken* cancel) {
+        const auto start = std::chrono::steady_clock::now();
+        const bool curved = base_vertices.has_value();
+        if (curved == plane.has_value())
+          throw InputError("synth: give plane=(width, height) or base=(vertices, faces)",
+                           ErrorKind::invalid_option);
+        TriMesh swatch =
+            swatch_vertices ? mesh_from(*swatch_vertices, *swatch_faces, "swatch") : default_swatch();
+        swatch = orient_swatch(swatch, "swatch");
+        if (plane &&
+            !(plane->first > 0.0 && plane->second > 0.0 && plane->first <= 1000.0 && plane->second <= 1000.0))
+          throw InputError("--plane: sizes must lie in (0, 1000]", ErrorKind::invalid_option);
+        if (curved && !(scale > 0.0 && scale <= 10.0))
+          throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale),
+                           ErrorKind::invalid_option);
+        if (cells < 4 || cells > 256)
+          throw InputError("--cells: expected 4..256, got " + std::to_string(cells),
+                           ErrorKind::invalid_option);
+        if (embed != "shell" && embed != "normal")
+          throw InputError("--embed: expected shell or normal, got '" + embed + "'",
+                           ErrorKind::invalid_option);
+        TriMesh base;
+        if (curved) base = prepare_base(mesh_from(*base_vertices, *base_faces, "base"), "base");
+        Job job;
+        if (cancel) job.token = cancel;
+        QuiltOptions common;
+        common.seed = seed;
+        common.cells_across_swatch = cells;
+        common.cleanup = cleanup;
+        common.cancel = job.token;
+        const auto begun = std::chrono::steady_clock::now();
+        if (progress) {
+          py::function callback = *progress;
+          common.progress = [&job, callback, begun](const QuiltProgress& p) {
+            const double share = p.total_area > 0.0 ? std::min(1.0, p.covered_area / p.total_area) : 0.0;
+            const double spent =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+            const double left = share > 0.0 ? spent * (1.0 - share) / share : -1.0;
+            py::gil_scoped_acquire gil;
+            try {
+              callback(share, left);
+            } catch (...) {
+              job.callback_error = std::current_exception();
+              job.token->cancel();
+            }
+          };
+        }
+        TriMesh result;
+        nlohmann::json stats;
+        {
+          py::gil_scoped_release release;
+          try {
+            std::unique_ptr<engine::Device> device =
+                engine::open_device(engine::parse_backend_choice(backend));
+            if (curved) {
+              SurfaceQuiltOptions options;
+              static_cast<QuiltOptions&>(options) = common;
+              options.scale = scale;
+              options.shell_height = shell_height;
+              options.shared_layout = !per_patch_charts;
+              options.symmetry = symmetry;
+              const BaseSurface surface(base);
+              const GuidanceField field = interpolate_field(surface, {});
+              ShellEmbeddingOptions shell_options;
+              shell_options.stretch.seed = seed;
+              if (embed == "shell")
+                options.embedding = [&](const BaseSurface& b, double height) {
+                  return std::unique_ptr<SurfaceEmbedding>(
+                      build_shell_embedding(*device, b, height, shell_options));
+                };
+              SurfaceQuiltStats s;
+              result = quilt_surface(swatch, base, field, *device, options, &s).mesh;
+              stats = {{"patches", s.patches},
+                       {"holes", s.holes},
+                       {"dropped_elements", s.dropped_elements},
+                       {"dropped_folded", s.dropped_folded},
+                       {"cones", s.cones},
+                       {"shell_height", s.shell_height}};
+            } else {
+              PlanarQuiltOptions options;
+              static_cast<QuiltOptions&>(options) = common;
+              options.width = plane->first;
+              options.height = plane->second;
+              QuiltStats s;
+              result = quilt_plane(swatch, *device, options, &s);
+              stats = {{"patches", s.patches},
+                       {"holes", s.holes},
+                       {"dropped_elements", s.dropped_elements},
+                       {"dropped_folded", s.dropped_folded}};
+            }
+          } catch (const Cancelled&) {
+            if (!job.callback_error) throw;
+          }
+        }
+        if (job.callback_error) std::rethrow_exception(job.callback_error);
+        stats["faces"] = result.num_faces();
+        stats["vertices"] = result.num_vertices();
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        py::dict out = dict_of(result);
+        out["stats"] = json_to_python(stats);
+        return out;
+      },
+      py::arg("swatch_vertices") = py::none(), py::arg("swatch_faces") = py::none(),
+      py::arg("plane") = py::none(), py::arg("base_vertices") = py::none(),
+      py::arg("base_faces") = py::none(), py::arg("scale") = 0.1, py::arg("seed") = 1,
+      py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("symmetry") = 0,
+      py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
+      py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
+
+  m.def(
+      "inspect",
+      [](const Array3d& vertices, const Array3i& faces, std::optional<py::array_t<int32_t>> element) {
+        TriMesh mesh = mesh_from(vertices, faces, "inspect");
+        if (element) mesh.elements.assign(element->data(), element->data() + element->size());
+        InspectReport report;
+        {
+          py::gil_scoped_release release;
+          report = inspect_mesh(mesh);
+        }
+        return json_to_python(to_json(report));
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("element") = py::none());
+
+  m.def(
+      "render",
+      [](const Array3d& vertices, const Array3i& faces, std::optional<py::array_t<int32_t>> element,
+         const std::string& path, int width, int height, const std::string& mode) {
+        TriMesh mesh = mesh_from(vertices, faces, "render");
+        if (element) mesh.elements.assign(element->data(), element->data() + element->size());
+        RenderOptions options;
+        options.width = width;
+        options.height = height;
+        if (mode != "shaded" && mode != "elements")
+          throw InputError("--mode: expected shaded or elements, got '" + mode + "'",
+                           ErrorKind::invalid_option);
+        options.mode = mode == "elements" ? RenderMode::elements : RenderMode::shaded;
+        py::gil_scoped_release release;
+        write_file_atomic(path, encode_png(render_mesh(mesh, options)));
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("element") = py::none(), py::arg("path"),
+      py::arg("width") = 1024, py::arg("height") = 768, py::arg("mode") = "shaded");
+
+  m.def(
+      "edit",
+      [](const Array3d& vertices, const Array3i& faces, const py::array_t<int32_t>& element,
+         std::optional<py::array_t<int32_t>> source, std::vector<int32_t> remove_elements,
+         std::vector<int32_t> remove_sources, std::vector<int32_t> keep_sources, double age, uint64_t seed) {
+        TriMesh mesh = mesh_from(vertices, faces, "edit");
+        mesh.elements.assign(element.data(), element.data() + element.size());
+        if (source) mesh.sources.assign(source->data(), source->data() + source->size());
+        if (mesh.elements.size() != mesh.num_faces() ||
+            (!mesh.sources.empty() && mesh.sources.size() != mesh.num_faces()))
+          throw InputError("edit: element and source need one entry per face", ErrorKind::invalid_option);
+        EditRequest request;
+        request.remove_elements = std::move(remove_elements);
+        request.remove_sources = std::move(remove_sources);
+        request.keep_sources = std::move(keep_sources);
+        request.age = age;
+        request.seed = seed;
+        EditCounts counts;
+        const std::vector<int32_t> removed = elements_to_remove(
+            {mesh.elements, mesh.sources, mesh.positions, mesh.triangles}, request, counts);
+        py::dict out = dict_of(keep_faces(mesh, faces_kept(mesh.elements, removed)));
+        out["removed"] = removed;
+        return out;
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("element"), py::arg("source") = py::none(),
+      py::arg("remove_elements") = std::vector<int32_t>{}, py::arg("remove_sources") = std::vector<int32_t>{},
+      py::arg("keep_sources") = std::vector<int32_t>{}, py::arg("age") = 0.0, py::arg("seed") = 1);
+}

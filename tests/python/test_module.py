@@ -1,0 +1,166 @@
+"""The Python module against the command line: the same seed gives the same vertices and faces
+(read from the CLI's PLY by a parser written here), progress and cancel, errors as exceptions,
+numpy dtypes and shapes. Run by ctest with PYTHONPATH at build/python and MESHQUILT_CLI set."""
+import os
+import struct
+import subprocess
+import tempfile
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import meshquilt
+
+CLI = os.environ["MESHQUILT_CLI"]
+SOURCE = os.environ["MESHQUILT_SOURCE_DIR"]
+
+
+def read_ply(path):
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().split("\n")
+    assert header[1] == "format binary_little_endian 1.0"
+    elements, current = [], None
+    for line in header:
+        words = line.split()
+        if words and words[0] == "element":
+            current = [words[1], int(words[2]), []]
+            elements.append(current)
+        elif words and words[0] == "property":
+            current[2].append(words[1:])
+    codes = {"double": "d", "float": "f", "int": "i", "uchar": "B"}
+    offset, out = end, {}
+    for name, count, properties in elements:
+        rows = []
+        for _ in range(count):
+            row = []
+            for p in properties:
+                if p[0] == "list":
+                    n = data[offset]
+                    offset += 1
+                    row.append(struct.unpack_from("<%di" % n, data, offset))
+                    offset += 4 * n
+                else:
+                    row.append(struct.unpack_from("<" + codes[p[0]], data, offset)[0])
+                    offset += struct.calcsize(codes[p[0]])
+            rows.append(row)
+        out[name] = ([p[-1] for p in properties], rows)
+    return out
+
+
+def cli_synth(*args):
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "out.ply")
+        done = subprocess.run([CLI, "synth", "--progress", "none", "--backend", "cpu", *args, "-o", path],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        ply = read_ply(path)
+    names, vertices = ply["vertex"]
+    fnames, faces = ply["face"]
+    v = np.array([row[:3] for row in vertices], dtype=np.float64)
+    f = np.array([row[0] for row in faces], dtype=np.int32)
+    element = np.array([row[fnames.index("element")] for row in faces], dtype=np.int32)
+    source = np.array([row[fnames.index("source")] for row in faces], dtype=np.int32)
+    return v, f, element, source
+
+
+def read_off(path):
+    words = open(path).read().split()
+    assert words[0] == "OFF"
+    nv, nf = int(words[1]), int(words[2])
+    v = np.array(words[4:4 + 3 * nv], dtype=np.float64).reshape(nv, 3)
+    f = np.array(words[4 + 3 * nv:4 + 3 * nv + 4 * nf], dtype=np.int32).reshape(nf, 4)[:, 1:]
+    return v, f
+
+
+def test_a_plane_equals_the_command_line():
+    result = meshquilt.synth(plane=(2, 2), seed=1, backend="cpu")
+    v, f, element, source = cli_synth("--plane", "2x2", "--seed", "1")
+    assert result.vertices.dtype == np.float64 and result.vertices.shape == v.shape
+    assert result.faces.dtype == np.int32 and result.faces.shape == f.shape
+    assert np.array_equal(result.vertices, v)
+    assert np.array_equal(result.faces, f)
+    assert np.array_equal(result.element, element)
+    assert np.array_equal(result.source, source)
+    assert result.stats["faces"] == len(f)
+
+
+def test_a_base_and_a_swatch_equal_the_command_line():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    mail = meshquilt.swatch("chainmail", preset="small")
+    with tempfile.TemporaryDirectory() as folder:
+        swatch_path = os.path.join(folder, "mail.ply")
+        subprocess.run([CLI, "swatch", "chainmail", "--preset", "small", "-o", swatch_path], check=True,
+                       capture_output=True)
+        result = meshquilt.synth(mail, base=base, scale=0.3, seed=3, backend="cpu")
+        v, f, element, source = cli_synth("--swatch", swatch_path, "--base", os.path.join(SOURCE, "data", "sphere.off"),
+                                          "--scale", "0.3", "--seed", "3")
+    assert np.array_equal(result.vertices, v)
+    assert np.array_equal(result.faces, f)
+    assert np.array_equal(result.element, element)
+
+
+def test_progress_rises_to_the_whole_and_cancel_stops_the_job():
+    shares = []
+    meshquilt.synth(plane=(2, 2), backend="cpu", progress=lambda share, left: shares.append((share, left)))
+    assert len(shares) > 3
+    assert all(b[0] >= a[0] for a, b in zip(shares, shares[1:]))
+    assert shares[-1][0] == pytest.approx(1.0)
+    assert shares[-1][1] == pytest.approx(0.0, abs=1e-6)
+    token = meshquilt.CancelToken()
+
+    def stop_early(share, left):
+        if share > 0.2:
+            token.cancel()
+
+    with pytest.raises(meshquilt.Cancelled):
+        meshquilt.synth(plane=(3, 3), backend="cpu", progress=stop_early, cancel=token)
+
+    def fail(share, left):
+        raise KeyError("from the callback")
+
+    with pytest.raises(KeyError):
+        meshquilt.synth(plane=(2, 2), backend="cpu", progress=fail)
+
+
+def test_the_engine_runs_without_the_gil():
+    ticks = []
+    done = threading.Event()
+
+    def job():
+        meshquilt.synth(plane=(3, 3), backend="cpu")
+        done.set()
+
+    worker = threading.Thread(target=job)
+    worker.start()
+    while not done.is_set():
+        ticks.append(time.monotonic())
+        time.sleep(0.01)
+    worker.join()
+    assert len(ticks) > 10
+
+
+def test_errors_carry_the_command_lines_message():
+    with pytest.raises(meshquilt.Error, match="--plane"):
+        meshquilt.synth(plane=(0, 2))
+    with pytest.raises(meshquilt.Error, match=r"\(N, 3\)"):
+        meshquilt.synth(base=(np.zeros((4, 2)), np.zeros((1, 3))))
+    with pytest.raises(meshquilt.Error, match="index"):
+        meshquilt.synth(base=(np.zeros((3, 3)), np.array([[0, 1, 7]])))
+    with pytest.raises(meshquilt.Error, match="unknown option 'colour'"):
+        meshquilt.swatch("chainmail", colour=3)
+    with pytest.raises(TypeError):
+        meshquilt.synth()
+
+
+def test_edit_ages_and_keeps_the_rest():
+    result = meshquilt.synth(plane=(2, 2), backend="cpu")
+    kept = meshquilt.edit(result, age=0.1, seed=3)
+    before, after = np.unique(result.element), np.unique(kept.element)
+    assert len(before) - len(after) == round(0.1 * len(before))
+    assert set(after) <= set(before)
+    report = meshquilt.inspect(kept)
+    assert report["elements"] == len(after)
+    assert report["closed_elements"] == len(after)
