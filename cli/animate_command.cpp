@@ -3,7 +3,6 @@
 // scaled into its own local frame (edit/swatch_animation.h). Over a moving base (a texture file
 // with --base-frames) both motions add.
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -33,12 +32,6 @@ struct AnimateArgs {
   std::string quilt, swatch_frames, swatch, output, base, base_frames, embed = "auto", format = "ply", stats;
   bool keep_all = false;
 };
-
-bool is_texture_file(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".mqt";
-}
 
 void run_animate(const AnimateArgs& args) {
   const auto start = std::chrono::steady_clock::now();

@@ -1,7 +1,6 @@
 // `meshquilt edit IN -o OUT`: removes and recolours elements of a synthesized result (a mesh or a
 // texture-space file), keeping every other element exactly as it was (Figure 9 of the paper).
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -30,12 +29,6 @@ struct EditArgs {
   uint64_t seed = 1;
   std::string color_by, palette;
 };
-
-bool is_texture_file(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".mqt";
-}
 
 // "3,5,10-20": ids and inclusive ranges.
 std::vector<int32_t> parse_ids(const std::string& text, const std::string& option) {

@@ -9,6 +9,9 @@
 
 namespace meshquilt::cli {
 
+// Whether `path` names a texture-space file (extension .mqt, any case).
+bool is_texture_file(const std::string& path);
+
 struct PlacedTexture {
   TriMesh mesh;            // positions, triangles, elements and sources
   bool shell_map = false;  // placed through the shell map (else normal displacement)
