@@ -20,6 +20,7 @@
 #include "inspect/inspect_report.h"
 #include "mesh/atomic_write.h"
 #include "mesh/base_mesh.h"
+#include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "quilt/planar_quilting.h"
@@ -367,6 +368,34 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("symmetry") = 0,
       py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
       py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
+
+  m.def(
+      "read",
+      [](const std::string& path) {
+        TriMesh mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = read_mesh(path);
+        }
+        return dict_of(mesh);
+      },
+      py::arg("path"));
+
+  m.def(
+      "write",
+      [](const Array3d& vertices, const Array3i& faces, std::optional<py::array_t<int32_t>> element,
+         std::optional<py::array_t<int32_t>> source, const std::string& path) {
+        TriMesh mesh = mesh_from(vertices, faces, "write");
+        if (element) mesh.elements.assign(element->data(), element->data() + element->size());
+        if (source) mesh.sources.assign(source->data(), source->data() + source->size());
+        if ((!mesh.elements.empty() && mesh.elements.size() != mesh.num_faces()) ||
+            (!mesh.sources.empty() && mesh.sources.size() != mesh.num_faces()))
+          throw InputError("write: element and source need one entry per face", ErrorKind::invalid_option);
+        py::gil_scoped_release release;
+        write_mesh(mesh, path);
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("element") = py::none(), py::arg("source") = py::none(),
+      py::arg("path"));
 
   m.def(
       "inspect",

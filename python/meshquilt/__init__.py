@@ -19,7 +19,8 @@ import numpy as np
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "inspect", "render", "edit"]
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "inspect", "render", "edit",
+           "read", "write"]
 
 
 @dataclass
@@ -118,3 +119,19 @@ def edit(mesh: Mesh, *, remove_elements: Sequence[int] = (), remove_sources: Seq
     d = _meshquilt.edit(vertices, faces, np.ascontiguousarray(mesh.element, np.int32), source, list(remove_elements),
                         list(remove_sources), list(keep_sources), age, seed)
     return _mesh(d)
+
+
+def read(path: str) -> Mesh:
+    """Reads a mesh as `meshquilt` does (.obj .ply .off .stl): per-face element ids from the PLY
+    `element` property or OBJ groups, else the connected components; sources where the file has them."""
+    return _mesh(_meshquilt.read(path))
+
+
+def write(mesh: MeshLike, path: str) -> None:
+    """Writes a mesh as `meshquilt synth` does, atomically (.ply .obj .off .stl, or .glb for
+    Blender and game engines), with its element ids and sources."""
+    vertices, faces = _arrays(mesh, "write")
+    element = getattr(mesh, "element", None)
+    source = getattr(mesh, "source", None)
+    _meshquilt.write(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32),
+                     None if source is None else np.ascontiguousarray(source, np.int32), path)

@@ -164,3 +164,19 @@ def test_edit_ages_and_keeps_the_rest():
     report = meshquilt.inspect(kept)
     assert report["elements"] == len(after)
     assert report["closed_elements"] == len(after)
+
+
+def test_write_then_read_gives_the_result_back(tmp_path):
+    result = meshquilt.synth(plane=(1.5, 1.5), backend="cpu")
+    meshquilt.write(result, str(tmp_path / "r.ply"))
+    back = meshquilt.read(str(tmp_path / "r.ply"))
+    assert np.array_equal(back.vertices, result.vertices)
+    assert np.array_equal(back.faces, result.faces)
+    assert np.array_equal(back.element, result.element)
+    assert np.array_equal(back.source, result.source)
+    meshquilt.write(result, str(tmp_path / "r.glb"))
+    assert open(tmp_path / "r.glb", "rb").read(4) == b"glTF"
+    with pytest.raises(meshquilt.Error, match="unknown mesh format"):
+        meshquilt.write(result, str(tmp_path / "r.xyz"))
+    with pytest.raises(meshquilt.Error, match="missing.ply"):
+        meshquilt.read(str(tmp_path / "missing.ply"))
