@@ -260,7 +260,8 @@ PYBIND11_MODULE(_meshquilt, m) {
          std::optional<std::pair<double, double>> plane, std::optional<Array3d> base_vertices,
          std::optional<Array3i> base_faces, double scale, uint64_t seed, const std::string& backend,
          int cells, bool cleanup, int symmetry, double shell_height, const std::string& embed,
-         bool per_patch_charts, std::optional<py::function> progress, CancelToken* cancel) {
+         bool per_patch_charts, bool minimize_distortion, std::optional<py::function> progress,
+         CancelToken* cancel) {
         const auto start = std::chrono::steady_clock::now();
         const bool curved = base_vertices.has_value();
         if (curved == plane.has_value())
@@ -325,6 +326,7 @@ PYBIND11_MODULE(_meshquilt, m) {
               const GuidanceField field = interpolate_field(surface, {});
               ShellEmbeddingOptions shell_options;
               shell_options.stretch.seed = seed;
+              shell_options.minimize_stretch = minimize_distortion;
               if (embed == "shell")
                 options.embedding = [&](const BaseSurface& b, double height) {
                   return std::unique_ptr<SurfaceEmbedding>(
@@ -367,7 +369,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("base_faces") = py::none(), py::arg("scale") = 0.1, py::arg("seed") = 1,
       py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("symmetry") = 0,
       py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
-      py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
+      py::arg("minimize_distortion") = true, py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
 
   m.def(
       "read",

@@ -73,13 +73,13 @@ def swatch(kind: str, preset: str = "default", seed: int = 1, **options: Any) ->
 def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, float]] = None,
           base: Optional[MeshLike] = None, scale: float = 0.1, seed: int = 1, backend: str = "auto",
           cells: int = 16, cleanup: bool = True, symmetry: int = 0, shell_height: float = 0.0,
-          embed: str = "shell", per_patch_charts: bool = False,
+          embed: str = "shell", per_patch_charts: bool = False, minimize_distortion: bool = True,
           progress: Optional[Callable[[float, float], None]] = None,
           cancel: Optional[CancelToken] = None) -> Result:
     """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
     swatch extents, or over `base` at `scale` (the swatch's longer side over the base's bounding-box
     diagonal), as `meshquilt synth` does with the same options: the same seed gives the same
-    vertices and faces. `progress(share, seconds_left)` is called after each patch (seconds_left is
+    vertices and faces. minimize_distortion=False is synth's --no-distortion-min. `progress(share, seconds_left)` is called after each patch (seconds_left is
     -1 until something is covered); raising in it cancels the job. The engine runs without the GIL."""
     if (plane is None) == (base is None):
         raise TypeError("synth: give plane=(width, height) or base=(vertices, faces)")
@@ -89,7 +89,8 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
     if base is not None:
         bv, bf = _arrays(base, "base")
     d = _meshquilt.synth(sv, sf, None if plane is None else (float(plane[0]), float(plane[1])), bv, bf, scale, seed,
-                         backend, cells, cleanup, symmetry, shell_height, embed, per_patch_charts, progress, cancel)
+                         backend, cells, cleanup, symmetry, shell_height, embed, per_patch_charts,
+                         minimize_distortion, progress, cancel)
     return _mesh(d, Result, stats=d["stats"])
 
 

@@ -1,0 +1,45 @@
+"""Quilts a UV sphere with the small chain mail through the add-on and renders it with Cycles on
+the CPU (the picture in docs/blender.md):
+    blender -b --factory-startup --python render_quilted_sphere.py -- MODULE_FOLDER SOURCE OUT.png"""
+import os
+import sys
+
+import addon_utils
+import bpy
+
+module_folder, source, out = sys.argv[sys.argv.index("--") + 1:][:3]
+sys.path.insert(0, os.path.join(source, "blender"))
+addon_utils.enable("meshquilt_blender", default_set=True)
+bpy.context.preferences.addons["meshquilt_blender"].preferences.module_path = module_folder
+
+bpy.data.objects.remove(bpy.data.objects["Cube"])
+bpy.ops.mesh.primitive_uv_sphere_add(segments=48, ring_count=24, radius=1.0)
+base = bpy.context.active_object
+base.data.materials.append(bpy.data.materials.new("base"))
+base.data.materials[0].diffuse_color = (0.15, 0.12, 0.1, 1.0)
+settings = bpy.context.scene.meshquilt
+settings.swatch_kind, settings.small, settings.scale, settings.seed = "chainmail", True, 0.25, 1
+assert bpy.ops.meshquilt.create() == {"FINISHED"}
+quilt = bpy.data.objects[base.name + "_quilt"]
+metal = bpy.data.materials.new("steel")
+metal.use_nodes = True
+shader = metal.node_tree.nodes["Principled BSDF"]
+shader.inputs["Base Color"].default_value = (0.75, 0.75, 0.78, 1.0)
+shader.inputs["Metallic"].default_value = 1.0
+shader.inputs["Roughness"].default_value = 0.3
+quilt.data.materials.clear()
+quilt.data.materials.append(metal)
+
+scene = bpy.context.scene
+scene.render.engine = "CYCLES"
+scene.cycles.device = "CPU"
+scene.cycles.samples = 24
+scene.cycles.use_denoising = False  # Debian's Blender is built without OpenImageDenoise
+scene.render.resolution_x, scene.render.resolution_y = 640, 480
+camera = bpy.data.objects["Camera"]
+camera.location = (3.2, -3.2, 2.2)
+camera.rotation_euler = (1.1, 0.0, 0.785)
+bpy.data.objects["Light"].data.energy = 1500
+scene.world.color = (0.6, 0.62, 0.65)
+scene.render.filepath = out
+bpy.ops.render.render(write_still=True)

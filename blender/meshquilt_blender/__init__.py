@@ -1,0 +1,250 @@
+"""meshquilt in Blender: a panel in the 3D view's sidebar that quilts the active mesh with a
+swatch (a mesh object or a built-in one), off the main thread, with progress and Esc to cancel
+(the one-window quilter of the Arachne plug-in design)."""
+
+bl_info = {
+    "name": "meshquilt",
+    "author": "meshquilt developers",
+    "version": (0, 1, 0),
+    "blender": (3, 4, 0),
+    "location": "View3D > Sidebar > meshquilt",
+    "description": "Grow chain mail, weaves, fruit and vines over a mesh by mesh quilting",
+    "category": "Mesh",
+}
+
+import bpy
+import numpy as np
+
+from . import job as quilt_job
+
+BUILT_IN = [("chainmail", "Chain mail", "4-in-1 rings"), ("weave", "Weave", "plain weave"),
+            ("wire", "Wire", "sparse crimped wire"), ("fruit", "Fruit", "apple-like blobs"),
+            ("nuts", "Nuts", "hex nuts"), ("vine", "Vine", "swaying stalks")]
+
+
+class MeshquiltPreferences(bpy.types.AddonPreferences):
+    bl_idname = __package__
+    module_path: bpy.props.StringProperty(name="Module folder", subtype="DIR_PATH",
+                                          description="Folder holding the Python package meshquilt (build/python)")
+    executable: bpy.props.StringProperty(name="meshquilt executable", default="meshquilt", subtype="FILE_PATH",
+                                         description="Run when the module cannot be imported")
+
+    def draw(self, context):
+        self.layout.prop(self, "module_path")
+        self.layout.prop(self, "executable")
+
+
+class MeshquiltSettings(bpy.types.PropertyGroup):
+    swatch_object: bpy.props.PointerProperty(name="Swatch", type=bpy.types.Object,
+                                             poll=lambda self, obj: obj.type == "MESH",
+                                             description="A mesh object as the swatch; empty: a built-in one")
+    swatch_kind: bpy.props.EnumProperty(name="Built-in", items=BUILT_IN, default="chainmail")
+    small: bpy.props.BoolProperty(name="Small preset", default=True, description="Test-sized built-in swatch")
+    scale: bpy.props.FloatProperty(name="Scale", default=0.15, min=0.001, max=10.0,
+                                   description="Swatch's longer side over the base's bounding-box diagonal")
+    seed: bpy.props.IntProperty(name="Seed", default=1, min=0)
+    minimize_distortion: bpy.props.BoolProperty(name="Minimize distortion", default=True)
+    shell_height: bpy.props.FloatProperty(name="Shell height", default=0.0, min=0.0,
+                                          description="Layer height in base units (0: the swatch's own)")
+    select_share: bpy.props.FloatProperty(name="Share", default=0.1, min=0.0, max=1.0)
+
+
+def settings_of(context):
+    return context.scene.meshquilt
+
+
+def preferences(context):
+    addon = context.preferences.addons.get(__package__)
+    return addon.preferences if addon else None
+
+
+def mesh_arrays(obj, depsgraph=None):
+    """World-space vertices and triangles of a mesh object (evaluated when a depsgraph is given)."""
+    source = obj.evaluated_get(depsgraph) if depsgraph else obj
+    mesh = source.to_mesh()
+    mesh.calc_loop_triangles()
+    vertices = np.empty(len(mesh.vertices) * 3)
+    mesh.vertices.foreach_get("co", vertices)
+    vertices = vertices.reshape(-1, 3)
+    matrix = np.array(obj.matrix_world)
+    vertices = vertices @ matrix[:3, :3].T + matrix[:3, 3]
+    faces = np.empty(len(mesh.loop_triangles) * 3, dtype=np.int32)
+    mesh.loop_triangles.foreach_get("vertices", faces)
+    source.to_mesh_clear()
+    return vertices, faces.reshape(-1, 3)
+
+
+def make_job(context, base):
+    s, prefs = settings_of(context), preferences(context)
+    swatch = mesh_arrays(s.swatch_object) if s.swatch_object else None
+    return quilt_job.QuiltJob(mesh_arrays(base), swatch=swatch, swatch_kind=s.swatch_kind,
+                              swatch_options={"preset": "small"} if s.small else {}, scale=s.scale, seed=s.seed,
+                              minimize_distortion=s.minimize_distortion, shell_height=s.shell_height,
+                              module_path=prefs.module_path if prefs else "",
+                              executable=prefs.executable if prefs else "meshquilt")
+
+
+def add_result_object(context, base, result):
+    """The result as a new object beside the base, with face attributes `element` and `source`
+    and one material per source."""
+    vertices, faces = result["vertices"], result["faces"]
+    mesh = bpy.data.meshes.new(base.name + "_quilt")
+    mesh.vertices.add(len(vertices))
+    mesh.vertices.foreach_set("co", np.asarray(vertices, dtype=np.float64).ravel())
+    mesh.loops.add(faces.size)
+    mesh.loops.foreach_set("vertex_index", np.asarray(faces, dtype=np.int32).ravel())
+    mesh.polygons.add(len(faces))
+    mesh.polygons.foreach_set("loop_start", np.arange(0, faces.size, 3, dtype=np.int32))
+    mesh.polygons.foreach_set("loop_total", np.full(len(faces), 3, dtype=np.int32))
+    for name in ("element", "source"):
+        if result.get(name) is not None:
+            attribute = mesh.attributes.new(name, "INT", "FACE")
+            attribute.data.foreach_set("value", np.asarray(result[name], dtype=np.int32))
+    if result.get("source") is not None:
+        sources = np.unique(result["source"])
+        for k, s in enumerate(sources):
+            material = bpy.data.materials.new("%s_source_%d" % (mesh.name, s))
+            hue = (0.618034 * k) % 1.0
+            material.diffuse_color = (0.4 + 0.5 * abs(np.sin(6.283 * hue)), 0.4 + 0.5 * abs(np.sin(6.283 * (hue + 0.33))),
+                                      0.4 + 0.5 * abs(np.sin(6.283 * (hue + 0.66))), 1.0)
+            mesh.materials.append(material)
+        index = np.searchsorted(sources, result["source"]).astype(np.int32)
+        mesh.polygons.foreach_set("material_index", index)
+    mesh.update()
+    mesh.validate()
+    obj = bpy.data.objects.new(mesh.name, mesh)
+    context.collection.objects.link(obj)
+    return obj
+
+
+class MESHQUILT_OT_create(bpy.types.Operator):
+    """Quilt the active mesh with the swatch; Esc cancels and leaves the scene as it was"""
+    bl_idname = "meshquilt.create"
+    bl_label = "Create"
+
+    _timer = None
+    _job = None
+    _base = None
+
+    @classmethod
+    def poll(cls, context):
+        return context.active_object is not None and context.active_object.type == "MESH"
+
+    def invoke(self, context, event):
+        self._base = context.active_object
+        self._job = make_job(context, self._base).start()
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(0.2, window=context.window)
+        wm.progress_begin(0, 100)
+        wm.modal_handler_add(self)
+        return {"RUNNING_MODAL"}
+
+    def execute(self, context):  # without a window (scripts, background): run to the end
+        self._base = context.active_object
+        self._job = make_job(context, self._base).start()
+        self._job.wait()
+        return self._finish(context)
+
+    def modal(self, context, event):
+        wm = context.window_manager
+        if event.type == "ESC":
+            self._job.cancel()
+            self._job.wait()
+            return self._finish(context)
+        if event.type == "TIMER":
+            wm.progress_update(int(100 * self._job.share))
+            left = self._job.seconds_left
+            context.workspace.status_text_set("meshquilt: %d%%%s" % (
+                100 * self._job.share, ", %.0f s left" % left if left >= 0 else ""))
+            if self._job.done.is_set():
+                return self._finish(context)
+        return {"PASS_THROUGH"}
+
+    def _finish(self, context):
+        wm = context.window_manager
+        if self._timer is not None:
+            wm.event_timer_remove(self._timer)
+            wm.progress_end()
+            context.workspace.status_text_set(None)
+        if self._job.cancelled:
+            self.report({"INFO"}, "meshquilt: cancelled; nothing changed")
+            return {"CANCELLED"}
+        if self._job.error:
+            self.report({"ERROR"}, self._job.error)
+            return {"CANCELLED"}
+        obj = add_result_object(context, self._base, self._job.result)
+        self.report({"INFO"}, "meshquilt: %d faces in %s" % (len(self._job.result["faces"]), obj.name))
+        return {"FINISHED"}
+
+
+class MESHQUILT_OT_select(bpy.types.Operator):
+    """Select the faces of some elements of a quilted object: by id, by source or at random by share
+    (delete them to age the result, Figure 9 of the paper)"""
+    bl_idname = "meshquilt.select"
+    bl_label = "Select elements"
+    bl_options = {"REGISTER", "UNDO"}
+
+    mode: bpy.props.EnumProperty(items=[("RANDOM", "At random", ""), ("ID", "By id", ""), ("SOURCE", "By source", "")])
+    value: bpy.props.IntProperty(name="Id or source", default=0)
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and obj.type == "MESH" and "element" in obj.data.attributes
+
+    def execute(self, context):
+        mesh = context.active_object.data
+        element = np.empty(len(mesh.polygons), dtype=np.int32)
+        mesh.attributes["element"].data.foreach_get("value", element)
+        if self.mode == "RANDOM":
+            ids = np.unique(element)
+            rng = np.random.default_rng(settings_of(context).seed)
+            chosen = rng.choice(ids, size=int(round(settings_of(context).select_share * len(ids))), replace=False)
+            selected = np.isin(element, chosen)
+        elif self.mode == "ID":
+            selected = element == self.value
+        else:
+            source = np.empty(len(mesh.polygons), dtype=np.int32)
+            mesh.attributes["source"].data.foreach_get("value", source)
+            selected = source == self.value
+        mesh.polygons.foreach_set("select", selected)
+        mesh.update()
+        return {"FINISHED"}
+
+
+class VIEW3D_PT_meshquilt(bpy.types.Panel):
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "meshquilt"
+    bl_label = "meshquilt"
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
+        layout.label(text="Base: " + (context.active_object.name if context.active_object else "none"))
+        layout.prop(s, "swatch_object")
+        if not s.swatch_object:
+            layout.prop(s, "swatch_kind")
+            layout.prop(s, "small")
+        layout.prop(s, "scale")
+        layout.prop(s, "seed")
+        layout.prop(s, "minimize_distortion")
+        layout.prop(s, "shell_height")
+        layout.operator(MESHQUILT_OT_create.bl_idname)
+        box = layout.box()
+        box.prop(s, "select_share")
+        box.operator(MESHQUILT_OT_select.bl_idname).mode = "RANDOM"
+
+
+classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, VIEW3D_PT_meshquilt)
+
+
+def register():
+    for cls in classes:
+        bpy.utils.register_class(cls)
+    bpy.types.Scene.meshquilt = bpy.props.PointerProperty(type=MeshquiltSettings)
+
+
+def unregister():
+    del bpy.types.Scene.meshquilt
+    for cls in reversed(classes):
+        bpy.utils.unregister_class(cls)

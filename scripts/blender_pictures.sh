@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Regenerates docs/blender.md's pictures: the add-on's panel after a modal Create in Blender's
+# window under Xvfb, and a quilted sphere rendered with Cycles on the CPU. Needs a build with the
+# Python module (scripts/build.sh --tests), Blender and xvfb-run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+blender -b --factory-startup --python-expr "import bpy; bpy.ops.wm.save_as_mainfile(filepath='$work/start.blend')" >/dev/null
+xvfb-run -a -s "-screen 0 1280x800x24" blender --factory-startup "$work/start.blend" \
+  --python blender/examples/panel_screenshot.py -- "$PWD/build/python" "$PWD" docs/images/blender_panel.png >/dev/null
+blender -b --factory-startup --python blender/examples/render_quilted_sphere.py -- \
+  "$PWD/build/python" "$PWD" docs/images/blender_sphere.png >/dev/null
+echo "wrote docs/images/blender_panel.png and docs/images/blender_sphere.png"

@@ -1,0 +1,88 @@
+"""The add-on in real Blender, headless:
+    blender -b --factory-startup --python-exit-code 1 --python test_addon.py -- MODULE_FOLDER SOURCE MESHQUILT
+It enables the add-on, quilts the default cube with the small chain mail through the job object
+and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
+and finds the scene unchanged, selects elements at random, and parses the extension manifest."""
+import os
+import sys
+import tomllib
+
+import addon_utils
+import bpy
+import numpy as np
+
+module_folder, source, executable = sys.argv[sys.argv.index("--") + 1:][:3]
+sys.path.insert(0, os.path.join(source, "blender"))
+
+
+def check(condition, what):
+    if not condition:
+        raise AssertionError(what)
+    print("ok:", what)
+
+
+addon_utils.enable("meshquilt_blender", default_set=True)
+check("meshquilt_blender" in bpy.context.preferences.addons, "the add-on is enabled")
+import meshquilt_blender  # noqa: E402
+
+bpy.context.preferences.addons["meshquilt_blender"].preferences.module_path = module_folder
+meshquilt = meshquilt_blender.job.import_module(module_folder)
+check(meshquilt is not None, "the module is found through the preference's folder")
+
+cube = bpy.data.objects["Cube"]
+bpy.context.view_layer.objects.active = cube
+settings = bpy.context.scene.meshquilt
+settings.swatch_kind, settings.small, settings.scale, settings.seed = "chainmail", True, 0.4, 2
+
+# The job object gives the module's own result.
+job = meshquilt_blender.make_job(bpy.context, cube).start()
+check(job.wait(600) and job.error is None, "a job quilts the cube")
+vertices, faces = meshquilt_blender.mesh_arrays(cube)
+expected = meshquilt.synth(meshquilt.swatch("chainmail", preset="small"), base=(vertices, faces), scale=0.4, seed=2)
+check(np.array_equal(job.result["faces"], expected.faces), "the job's faces are the module's")
+
+# Without the module the job runs the executable and reads its PLY: the same faces.
+fallback = meshquilt_blender.job.QuiltJob((vertices, faces), swatch_kind="chainmail", swatch_options={"preset": "small"},
+                                         scale=0.4, seed=2, executable=executable)
+fallback.module, fallback._token = None, None
+check(fallback.start().wait(600) and fallback.error is None, "the executable quilts the cube: " + str(fallback.error))
+check(np.array_equal(fallback.result["faces"], expected.faces) and np.array_equal(fallback.result["element"],
+                                                                                  expected.element),
+      "the executable's result is the module's")
+
+# Create (run to the end without a window) adds one object with the attributes.
+before = set(bpy.data.objects.keys())
+check(bpy.ops.meshquilt.create() == {"FINISHED"}, "Create finishes")
+added = [bpy.data.objects[name] for name in set(bpy.data.objects.keys()) - before]
+check(len(added) == 1, "Create adds one object")
+mesh = added[0].data
+check(len(mesh.polygons) == len(expected.faces), "its face count is the result's")
+element = np.empty(len(mesh.polygons), dtype=np.int32)
+mesh.attributes["element"].data.foreach_get("value", element)
+source_ids = np.empty(len(mesh.polygons), dtype=np.int32)
+mesh.attributes["source"].data.foreach_get("value", source_ids)
+check(np.array_equal(element, expected.element) and np.array_equal(source_ids, expected.source),
+      "face attributes element and source are the result's")
+check(len(mesh.materials) == len(np.unique(expected.source)), "one material per source")
+
+# A cancelled job leaves nothing: no result, no new object.
+count = len(bpy.data.objects)
+settings.scale = 0.15
+job = meshquilt_blender.make_job(bpy.context, cube).start()
+job.cancel()
+check(job.wait(600) and job.cancelled and job.result is None, "a cancelled job ends with no result")
+check(len(bpy.data.objects) == count, "the scene is unchanged")
+
+# Selecting a share of the elements at random (the paper's aging, by deleting them).
+bpy.context.view_layer.objects.active = added[0]
+settings.select_share = 0.25
+bpy.ops.meshquilt.select(mode="RANDOM")
+selected = np.empty(len(mesh.polygons), dtype=bool)
+mesh.polygons.foreach_get("select", selected)
+chosen = np.unique(element[selected])
+check(len(chosen) == round(0.25 * len(np.unique(element))), "a quarter of the elements are selected")
+check(np.all(np.isin(element, chosen) == selected), "whole elements are selected")
+
+manifest = tomllib.load(open(os.path.join(source, "blender", "meshquilt_blender", "blender_manifest.toml"), "rb"))
+check(manifest["type"] == "add-on" and manifest["id"] == "meshquilt", "the extension manifest parses")
+print("blender add-on: all checks passed")
