@@ -21,7 +21,8 @@
 #include "mesh/topology.h"
 #include "quilt/broken_elements.h"
 #include "shell/texture_file.h"
-#include "texture_placement.h"
+#include "shell/texture_placement.h"
+#include "texture_files.h"
 
 namespace meshquilt::cli {
 namespace {

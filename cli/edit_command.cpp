@@ -16,7 +16,8 @@
 #include "mesh/mesh_io.h"
 #include "render/element_palette.h"
 #include "shell/texture_file.h"
-#include "texture_placement.h"
+#include "shell/texture_placement.h"
+#include "texture_files.h"
 
 namespace meshquilt::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "shell/texture_file.h"
-#include "texture_placement.h"
+#include "shell/texture_placement.h"
 
 namespace meshquilt::cli {
 namespace {

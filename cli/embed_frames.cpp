@@ -16,7 +16,7 @@
 #include "mesh/mesh_io.h"
 #include "sha256.h"
 #include "shell/texture_file.h"
-#include "texture_placement.h"
+#include "shell/texture_placement.h"
 
 namespace meshquilt::cli {
 namespace {

@@ -27,6 +27,8 @@
 #include "render/png_encoding.h"
 #include "render/render_mesh.h"
 #include "shell/shell_embedding.h"
+#include "shell/texture_file.h"
+#include "shell/texture_placement.h"
 #include "surface/guidance_field.h"
 #include "surface/surface_quilting.h"
 #include "swatch/chainmail.h"
@@ -260,8 +262,8 @@ PYBIND11_MODULE(_meshquilt, m) {
          std::optional<std::pair<double, double>> plane, std::optional<Array3d> base_vertices,
          std::optional<Array3i> base_faces, double scale, uint64_t seed, const std::string& backend,
          int cells, bool cleanup, int symmetry, double shell_height, const std::string& embed,
-         bool per_patch_charts, bool minimize_distortion, std::optional<py::function> progress,
-         CancelToken* cancel) {
+         bool per_patch_charts, bool minimize_distortion, bool keep_texture,
+         std::optional<py::function> progress, CancelToken* cancel) {
         const auto start = std::chrono::steady_clock::now();
         const bool curved = base_vertices.has_value();
         if (curved == plane.has_value())
@@ -310,6 +312,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         }
         TriMesh result;
         nlohmann::json stats;
+        std::string texture;
         {
           py::gil_scoped_release release;
           try {
@@ -325,15 +328,20 @@ PYBIND11_MODULE(_meshquilt, m) {
               const BaseSurface surface(base);
               const GuidanceField field = interpolate_field(surface, {});
               ShellEmbeddingOptions shell_options;
+              ShellTexture shell_texture;
               shell_options.stretch.seed = seed;
               shell_options.minimize_stretch = minimize_distortion;
               if (embed == "shell")
                 options.embedding = [&](const BaseSurface& b, double height) {
-                  return std::unique_ptr<SurfaceEmbedding>(
-                      build_shell_embedding(*device, b, height, shell_options));
+                  auto embedding = build_shell_embedding(*device, b, height, shell_options);
+                  if (keep_texture) shell_texture = embedding->texture();
+                  return std::unique_ptr<SurfaceEmbedding>(std::move(embedding));
                 };
               SurfaceQuiltStats s;
-              result = quilt_surface(swatch, base, field, *device, options, &s).mesh;
+              SurfaceQuilt quilt = quilt_surface(swatch, base, field, *device, options, &s);
+              result = std::move(quilt.mesh);
+              if (keep_texture)
+                texture = format_texture(make_quilt_texture(base, result, quilt.local, shell_texture));
               stats = {{"patches", s.patches},
                        {"holes", s.holes},
                        {"dropped_elements", s.dropped_elements},
@@ -362,6 +370,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         py::dict out = dict_of(result);
         out["stats"] = json_to_python(stats);
+        if (!texture.empty()) out["texture"] = py::bytes(texture);
         return out;
       },
       py::arg("swatch_vertices") = py::none(), py::arg("swatch_faces") = py::none(),
@@ -369,7 +378,24 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("base_faces") = py::none(), py::arg("scale") = 0.1, py::arg("seed") = 1,
       py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("symmetry") = 0,
       py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
-      py::arg("minimize_distortion") = true, py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
+      py::arg("minimize_distortion") = true, py::arg("keep_texture") = false,
+      py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
+
+  m.def(
+      "embed",
+      [](const py::bytes& texture_bytes, const Array3d& base_vertices, const Array3i& base_faces,
+         const std::string& embed) {
+        const QuiltTexture texture = parse_texture(std::string(texture_bytes), "texture");
+        const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
+        check_texture_base(texture, base, "base");
+        TriMesh placed;
+        {
+          py::gil_scoped_release release;
+          placed = place_texture(texture, base, embed, "texture").mesh;
+        }
+        return dict_of(placed);
+      },
+      py::arg("texture"), py::arg("base_vertices"), py::arg("base_faces"), py::arg("embed") = "auto");
 
   m.def(
       "read",

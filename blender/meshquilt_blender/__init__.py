@@ -12,6 +12,8 @@ bl_info = {
     "category": "Mesh",
 }
 
+import base64
+
 import bpy
 import numpy as np
 
@@ -113,6 +115,10 @@ def add_result_object(context, base, result):
     mesh.update()
     mesh.validate()
     obj = bpy.data.objects.new(mesh.name, mesh)
+    if result.get("texture"):
+        # The layer in texture space, so that it can follow the base after a pose or a sculpt.
+        obj["meshquilt_texture"] = base64.b64encode(result["texture"]).decode("ascii")
+        obj["meshquilt_base"] = base.name
     context.collection.objects.link(obj)
     return obj
 
@@ -212,6 +218,42 @@ class MESHQUILT_OT_select(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class MESHQUILT_OT_follow_base(bpy.types.Operator):
+    """Place the quilted layer over its base as the base is now (posed, sculpted or moved; the same
+    vertices and faces), without synthesizing again"""
+    bl_idname = "meshquilt.follow_base"
+    bl_label = "Follow the base"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and "meshquilt_texture" in obj and obj.get("meshquilt_base") in bpy.data.objects
+
+    def execute(self, context):
+        obj = context.active_object
+        prefs = preferences(context)
+        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        if module is None:
+            self.report({"ERROR"}, "meshquilt: following the base needs the Python module (see the preferences)")
+            return {"CANCELLED"}
+        base = bpy.data.objects[obj["meshquilt_base"]]
+        try:
+            placed = module.embed(base64.b64decode(obj["meshquilt_texture"]),
+                                  mesh_arrays(base, context.evaluated_depsgraph_get()))
+        except module.Error as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        if len(placed.vertices) != len(obj.data.vertices):
+            self.report({"ERROR"}, "meshquilt: the result was edited; it can no longer follow its base")
+            return {"CANCELLED"}
+        world_to_local = np.array(obj.matrix_world.inverted())
+        local = placed.vertices @ world_to_local[:3, :3].T + world_to_local[:3, 3]
+        obj.data.vertices.foreach_set("co", local.ravel())
+        obj.data.update()
+        return {"FINISHED"}
+
+
 class VIEW3D_PT_meshquilt(bpy.types.Panel):
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
@@ -230,12 +272,14 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
         layout.prop(s, "minimize_distortion")
         layout.prop(s, "shell_height")
         layout.operator(MESHQUILT_OT_create.bl_idname)
+        layout.operator(MESHQUILT_OT_follow_base.bl_idname)
         box = layout.box()
         box.prop(s, "select_share")
         box.operator(MESHQUILT_OT_select.bl_idname).mode = "RANDOM"
 
 
-classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, VIEW3D_PT_meshquilt)
+classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
+           VIEW3D_PT_meshquilt)
 
 
 def register():

@@ -113,8 +113,9 @@ class QuiltJob:
             swatch = m.swatch(self.swatch_kind, **self.swatch_options)
         r = m.synth(swatch, base=self.base, scale=self.scale, seed=self.seed,
                     minimize_distortion=self.minimize_distortion, shell_height=self.shell_height,
-                    progress=self._progress, cancel=self._token)
-        return {"vertices": r.vertices, "faces": r.faces, "element": r.element, "source": r.source}
+                    keep_texture=True, progress=self._progress, cancel=self._token)
+        return {"vertices": r.vertices, "faces": r.faces, "element": r.element, "source": r.source,
+                "texture": r.texture}
 
     def _run_executable(self):
         with tempfile.TemporaryDirectory() as folder:
@@ -130,8 +131,9 @@ class QuiltJob:
                 subprocess.run(args, check=True, capture_output=True)
                 swatch = os.path.join(folder, "swatch.ply")
             out = os.path.join(folder, "out.ply")
+            texture = os.path.join(folder, "out.mqt")
             args = [self.executable, "synth", "--swatch", swatch, "--base", base, "--scale", str(self.scale),
-                    "--seed", str(self.seed), "--progress", "json", "-o", out]
+                    "--seed", str(self.seed), "--progress", "json", "--write-texture", texture, "-o", out]
             if self.shell_height > 0.0:
                 args += ["--shell-height", str(self.shell_height)]
             if not self.minimize_distortion:
@@ -148,7 +150,9 @@ class QuiltJob:
             if self._process.wait() != 0:
                 message = self._process.stderr.read().strip().splitlines()
                 raise RuntimeError(message[-1] if message else "meshquilt synth failed")
-            return read_binary_ply(out)
+            result = read_binary_ply(out)
+            result["texture"] = open(texture, "rb").read()
+            return result
 
     @staticmethod
     def _write_off(path, vertices, faces):

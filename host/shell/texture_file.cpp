@@ -98,7 +98,7 @@ QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh,
   return t;
 }
 
-void write_texture_file(const std::filesystem::path& file, const QuiltTexture& t) {
+std::string format_texture(const QuiltTexture& t) {
   Writer w;
   w.raw(kMagic, kMagicBytes);
   w.put(t.base_vertices);
@@ -136,7 +136,11 @@ void write_texture_file(const std::filesystem::path& file, const QuiltTexture& t
   origins.resize(t.vertices.size(), -1);
   w.put_all(origins);
   w.put(fnv1a(w.bytes().data(), w.bytes().size()));
-  write_file_atomic(file, w.bytes());
+  return std::move(w.bytes());
+}
+
+void write_texture_file(const std::filesystem::path& file, const QuiltTexture& texture) {
+  write_file_atomic(file, format_texture(texture));
 }
 
 QuiltTexture read_texture_file(const std::filesystem::path& file) {

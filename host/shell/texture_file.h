@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "surface/surface_types.h"
@@ -43,6 +44,9 @@ uint64_t connectivity_hash(const TriMesh& base);
 //! The texture of a synthesized layer: `mesh` and `local` as quilt_surface returned them.
 QuiltTexture make_quilt_texture(const TriMesh& base, const TriMesh& mesh,
                                 const std::vector<LocalVertex>& local, const ShellTexture& shell);
+
+//! The bytes of a texture file (the format above).
+std::string format_texture(const QuiltTexture& texture);
 
 //! Writes atomically. \throw IoError(write_failed).
 void write_texture_file(const std::filesystem::path& file, const QuiltTexture& texture);

@@ -20,7 +20,7 @@ from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
 __all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "inspect", "render", "edit",
-           "read", "write"]
+           "read", "write", "embed"]
 
 
 @dataclass
@@ -40,6 +40,7 @@ class Result(Mesh):
     """A synthesized texture: the mesh and what the engine reports about it (`stats`)."""
 
     stats: Dict[str, Any] = field(default_factory=dict)
+    texture: Optional[bytes] = None  # with keep_texture over a base: the layer in texture space (.mqt bytes)
 
 
 MeshLike = Union[Mesh, Tuple[Any, Any]]
@@ -74,12 +75,14 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
           base: Optional[MeshLike] = None, scale: float = 0.1, seed: int = 1, backend: str = "auto",
           cells: int = 16, cleanup: bool = True, symmetry: int = 0, shell_height: float = 0.0,
           embed: str = "shell", per_patch_charts: bool = False, minimize_distortion: bool = True,
-          progress: Optional[Callable[[float, float], None]] = None,
+          keep_texture: bool = False, progress: Optional[Callable[[float, float], None]] = None,
           cancel: Optional[CancelToken] = None) -> Result:
     """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
     swatch extents, or over `base` at `scale` (the swatch's longer side over the base's bounding-box
     diagonal), as `meshquilt synth` does with the same options: the same seed gives the same
-    vertices and faces. minimize_distortion=False is synth's --no-distortion-min. `progress(share, seconds_left)` is called after each patch (seconds_left is
+    vertices and faces. minimize_distortion=False is synth's --no-distortion-min. keep_texture
+    (over a base) also returns the layer in texture space, the bytes of `--write-texture`'s file,
+    for `embed` over the base posed or edited. `progress(share, seconds_left)` is called after each patch (seconds_left is
     -1 until something is covered); raising in it cancels the job. The engine runs without the GIL."""
     if (plane is None) == (base is None):
         raise TypeError("synth: give plane=(width, height) or base=(vertices, faces)")
@@ -90,8 +93,8 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
         bv, bf = _arrays(base, "base")
     d = _meshquilt.synth(sv, sf, None if plane is None else (float(plane[0]), float(plane[1])), bv, bf, scale, seed,
                          backend, cells, cleanup, symmetry, shell_height, embed, per_patch_charts,
-                         minimize_distortion, progress, cancel)
-    return _mesh(d, Result, stats=d["stats"])
+                         minimize_distortion, keep_texture, progress, cancel)
+    return _mesh(d, Result, stats=d["stats"], texture=d.get("texture"))
 
 
 def inspect(mesh: MeshLike) -> Dict[str, Any]:
@@ -136,3 +139,11 @@ def write(mesh: MeshLike, path: str) -> None:
     source = getattr(mesh, "source", None)
     _meshquilt.write(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32),
                      None if source is None else np.ascontiguousarray(source, np.int32), path)
+
+
+def embed(texture: bytes, base: MeshLike, mode: str = "auto") -> Mesh:
+    """Places a layer kept by `synth(..., keep_texture=True)` (or read from a `.mqt` file) over a
+    base with the same vertices and faces, moved (a pose, a sculpt), as `meshquilt embed` does:
+    over the base it was made on it gives synth's result back exactly."""
+    vertices, faces = _arrays(base, "base")
+    return _mesh(_meshquilt.embed(bytes(texture), vertices, faces, mode))

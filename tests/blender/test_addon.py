@@ -2,7 +2,7 @@
     blender -b --factory-startup --python-exit-code 1 --python test_addon.py -- MODULE_FOLDER SOURCE MESHQUILT
 It enables the add-on, quilts the default cube with the small chain mail through the job object
 and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
-and finds the scene unchanged, selects elements at random, and parses the extension manifest."""
+and finds the scene unchanged, follows the base after it is stretched, selects elements at random, and parses the extension manifest."""
 import os
 import sys
 import tomllib
@@ -40,6 +40,7 @@ check(job.wait(600) and job.error is None, "a job quilts the cube")
 vertices, faces = meshquilt_blender.mesh_arrays(cube)
 expected = meshquilt.synth(meshquilt.swatch("chainmail", preset="small"), base=(vertices, faces), scale=0.4, seed=2)
 check(np.array_equal(job.result["faces"], expected.faces), "the job's faces are the module's")
+job_texture = job.result["texture"]
 
 # Without the module the job runs the executable and reads its PLY: the same faces.
 fallback = meshquilt_blender.job.QuiltJob((vertices, faces), swatch_kind="chainmail", swatch_options={"preset": "small"},
@@ -82,6 +83,18 @@ mesh.polygons.foreach_get("select", selected)
 chosen = np.unique(element[selected])
 check(len(chosen) == round(0.25 * len(np.unique(element))), "a quarter of the elements are selected")
 check(np.all(np.isin(element, chosen) == selected), "whole elements are selected")
+
+# Follow the base: the cube stretched, the layer placed over it again without synthesizing.
+quilt_obj = added[0]
+for v in cube.data.vertices:
+    v.co.x *= 1.3
+bpy.context.view_layer.objects.active = quilt_obj
+check(bpy.ops.meshquilt.follow_base() == {"FINISHED"}, "Follow the base finishes")
+moved = np.empty(len(quilt_obj.data.vertices) * 3)
+quilt_obj.data.vertices.foreach_get("co", moved)
+stretched = meshquilt.embed(job_texture, meshquilt_blender.mesh_arrays(cube))
+check(np.allclose(moved.reshape(-1, 3), stretched.vertices, atol=1e-5), "the layer follows the stretched cube")
+check(not np.allclose(moved.reshape(-1, 3), expected.vertices, atol=1e-3), "and has moved with it")
 
 manifest = tomllib.load(open(os.path.join(source, "blender", "meshquilt_blender", "blender_manifest.toml"), "rb"))
 check(manifest["type"] == "add-on" and manifest["id"] == "meshquilt", "the extension manifest parses")

@@ -94,9 +94,11 @@ def test_a_base_and_a_swatch_equal_the_command_line():
         swatch_path = os.path.join(folder, "mail.ply")
         subprocess.run([CLI, "swatch", "chainmail", "--preset", "small", "-o", swatch_path], check=True,
                        capture_output=True)
-        result = meshquilt.synth(mail, base=base, scale=0.3, seed=3, backend="cpu")
+        result = meshquilt.synth(mail, base=base, scale=0.3, seed=3, backend="cpu", keep_texture=True)
+        texture_path = os.path.join(folder, "t.mqt")
         v, f, element, source = cli_synth("--swatch", swatch_path, "--base", os.path.join(SOURCE, "data", "sphere.off"),
-                                          "--scale", "0.3", "--seed", "3")
+                                          "--scale", "0.3", "--seed", "3", "--write-texture", texture_path)
+        assert result.texture == open(texture_path, "rb").read()
     assert np.array_equal(result.vertices, v)
     assert np.array_equal(result.faces, f)
     assert np.array_equal(result.element, element)
@@ -180,3 +182,16 @@ def test_write_then_read_gives_the_result_back(tmp_path):
         meshquilt.write(result, str(tmp_path / "r.xyz"))
     with pytest.raises(meshquilt.Error, match="missing.ply"):
         meshquilt.read(str(tmp_path / "missing.ply"))
+
+
+def test_embed_gives_the_result_back_and_follows_a_moved_base():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    result = meshquilt.synth(meshquilt.swatch("chainmail", preset="small"), base=base, scale=0.4, backend="cpu",
+                             keep_texture=True)
+    same = meshquilt.embed(result.texture, base)
+    assert np.array_equal(same.vertices, result.vertices) and np.array_equal(same.faces, result.faces)
+    stretched = meshquilt.embed(result.texture, (base[0] * np.array([1.5, 1.0, 1.0]), base[1]))
+    assert np.array_equal(stretched.faces, result.faces)
+    assert stretched.vertices[:, 0].max() > 1.3 * result.vertices[:, 0].max()
+    with pytest.raises(meshquilt.Error, match="base"):
+        meshquilt.embed(result.texture, (base[0][:-1], base[1][:-1]))

@@ -1,20 +1,12 @@
-#include "texture_placement.h"
+#include "shell/texture_placement.h"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <memory>
 
 #include "core/error.h"
 #include "surface/element_placement.h"
 
-namespace meshquilt::cli {
+namespace meshquilt {
 
-bool is_texture_file(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".mqt";
-}
 
 PlacedTexture place_texture(const QuiltTexture& texture, const TriMesh& base, const std::string& embed,
                             const std::string& texture_name) {
@@ -48,4 +40,4 @@ PlacedTexture place_texture(const QuiltTexture& texture, const TriMesh& base, co
   return placed;
 }
 
-}  // namespace meshquilt::cli
+}  // namespace meshquilt
