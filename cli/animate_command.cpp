@@ -55,21 +55,16 @@ void run_animate(const AnimateArgs& args) {
   // The result: a mesh with origins, or a texture file placed over one base or each base frame.
   TriMesh quilt;
   QuiltTexture texture;
-  std::vector<fs::path> base_frames;
-  TriMesh reference, prepared;
-  std::vector<int32_t> base_sources;
+  std::unique_ptr<BaseFrames> base_frames;
   if (texture_in) {
     texture = read_texture_file(args.quilt);
     if (texture.origins.empty())
       throw InputError(
           args.quilt + ": a version 1 texture file names no swatch vertices; synthesize it again",
           ErrorKind::invalid_option);
-    base_frames =
-        args.base_frames.empty() ? std::vector<fs::path>{args.base} : list_mesh_frames(args.base_frames);
-    reference = read_mesh(base_frames[0]);
-    prepared = prepare_base(reference, base_frames[0].string());
-    check_texture_base(texture, prepared, base_frames[0].string());
-    base_sources = prepared_vertex_sources(reference);
+    base_frames = std::make_unique<BaseFrames>(
+        args.base_frames.empty() ? std::vector<fs::path>{args.base} : list_mesh_frames(args.base_frames),
+        texture);
   } else {
     quilt = read_mesh(args.quilt);
     if (quilt.origins.empty())
@@ -77,7 +72,7 @@ void run_animate(const AnimateArgs& args) {
                        ErrorKind::invalid_option);
     if (quilt.elements.empty()) quilt.elements = face_components(quilt);
   }
-  const size_t count = std::max(swatch_frames.size(), base_frames.size());
+  const size_t count = std::max(swatch_frames.size(), base_frames ? base_frames->size() : size_t{0});
   std::vector<glm::dmat3> frames;
   size_t placed_for = static_cast<size_t>(-1);
   // Frame k: the result over its base frame, each vertex moved by its swatch vertex.
@@ -89,14 +84,9 @@ void run_animate(const AnimateArgs& args) {
                            " vertices, not the swatch's " + std::to_string(rest.num_vertices()) + " (" +
                            rest_name + ")",
                        ErrorKind::invalid_option);
-    const size_t base_k = base_frames.empty() ? 0 : std::min(k, base_frames.size() - 1);
+    const size_t base_k = base_frames ? std::min(k, base_frames->size() - 1) : 0;
     if (texture_in && placed_for != base_k) {
-      const fs::path& base_path = base_frames[base_k];
-      const TriMesh frame = base_k == 0 ? reference : read_mesh(base_path);
-      if (frame.num_vertices() != reference.num_vertices() || frame.triangles != reference.triangles)
-        throw InputError(base_path.string() + ": not the first base frame's vertices and faces",
-                         ErrorKind::base_mismatch);
-      quilt = place_texture(texture, posed_base(prepared, base_sources, frame), args.embed, args.quilt).mesh;
+      quilt = place_texture(texture, base_frames->posed(base_k), args.embed, args.quilt).mesh;
       frames.clear();
       placed_for = base_k;
     }

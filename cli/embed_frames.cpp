@@ -69,6 +69,24 @@ std::vector<fs::path> list_mesh_frames(const fs::path& folder) {
   return frames;
 }
 
+BaseFrames::BaseFrames(std::vector<fs::path> files, const QuiltTexture& texture)
+    : files_(std::move(files)), reference_(read_mesh(files_[0])) {
+  prepared_ = prepare_base(reference_, files_[0].string());
+  check_texture_base(texture, prepared_, files_[0].string());
+  sources_ = prepared_vertex_sources(reference_);
+}
+
+TriMesh BaseFrames::posed(size_t k) const {
+  const TriMesh frame = k == 0 ? reference_ : read_mesh(files_[k]);
+  if (frame.num_vertices() != reference_.num_vertices() || frame.triangles != reference_.triangles)
+    throw InputError(files_[k].string() + ": " + std::to_string(frame.num_vertices()) + " vertices and " +
+                         std::to_string(frame.num_faces()) + " faces, not the first frame's " +
+                         std::to_string(reference_.num_vertices()) + " and " +
+                         std::to_string(reference_.num_faces()) + " in the same order",
+                     ErrorKind::base_mismatch);
+  return posed_base(prepared_, sources_, frame);
+}
+
 namespace {
 
 double largest_move(const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
@@ -82,7 +100,7 @@ double largest_move(const std::vector<Vec3>& from, const std::vector<Vec3>& to) 
 void run_embed_frames(const EmbedFramesArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   check_mesh_output("frame." + args.format);
-  const std::vector<fs::path> frames = list_mesh_frames(args.frames);
+  const std::vector<fs::path> files = list_mesh_frames(args.frames);
   std::error_code error;
   fs::create_directories(args.output, error);
   check_writable(fs::path(args.output) / "frame");
@@ -106,10 +124,7 @@ void run_embed_frames(const EmbedFramesArgs& args) {
   }
   write_text_atomic(record, made_by.dump(2) + "\n");
 
-  const TriMesh reference = read_mesh(frames[0]);
-  const TriMesh prepared = prepare_base(reference, frames[0].string());
-  check_texture_base(texture, prepared, frames[0].string());
-  const std::vector<int32_t> sources = prepared_vertex_sources(reference);
+  const BaseFrames frames(files, texture);
 
   nlohmann::json per_frame = nlohmann::json::array();
   std::vector<Vec3> previous_output, previous_base;
@@ -117,16 +132,9 @@ void run_embed_frames(const EmbedFramesArgs& args) {
   int made = 0, kept = 0;
   for (size_t k = 0; k < frames.size(); ++k) {
     const auto frame_start = std::chrono::steady_clock::now();
-    const std::string name = frames[k].string();
-    const TriMesh frame = k == 0 ? reference : read_mesh(frames[k]);
-    if (frame.num_vertices() != reference.num_vertices() || frame.triangles != reference.triangles)
-      throw InputError(name + ": " + std::to_string(frame.num_vertices()) + " vertices and " +
-                           std::to_string(frame.num_faces()) + " faces, not the first frame's " +
-                           std::to_string(reference.num_vertices()) + " and " +
-                           std::to_string(reference.num_faces()) + " in the same order",
-                       ErrorKind::base_mismatch);
-    const TriMesh posed = posed_base(prepared, sources, frame);
-    const fs::path out = fs::path(args.output) / (frames[k].stem().string() + "." + args.format);
+    const std::string name = frames.file(k).string();
+    const TriMesh posed = frames.posed(k);
+    const fs::path out = fs::path(args.output) / (frames.file(k).stem().string() + "." + args.format);
     nlohmann::json entry = {{"base", name}, {"output", out.string()}};
     if (resume && fs::exists(out)) {
       ++kept;

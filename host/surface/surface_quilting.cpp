@@ -428,9 +428,10 @@ class SurfaceDriver {
     BrokenElements removed;
     SurfaceQuilt result;
     result.mesh = finish_quilt(embedded, alive_, sources, setup_, options_, stats_, &removed);
-    if (stats_.dropped_elements > 0 && embedding_->has_synthesis_map()) {
+    if (stats_.dropped_elements > 0 && embedding_->has_synthesis_map() && stats_.synthesis_map_elements > 0) {
       // Which map an element goes through depends on the others present: place the kept ones
-      // again, so that `embed` of the texture over this base gives this output back.
+      // again, so that `embed` of the texture over this base gives this output back (with none
+      // through the synthesis map, fewer elements change nothing).
       std::vector<TriMesh> kept = embed_elements();
       QuiltOptions joined_only = options_;
       joined_only.cleanup = false;
