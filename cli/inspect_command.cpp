@@ -45,7 +45,8 @@ void add_inspect_command(CLI::App& app) {
   cmd->add_option("--swatch", args->swatch, "compare element area and extent distributions with this swatch");
   auto* plane = cmd->add_flag("--plane", args->plane,
                               "coverage of the x-y footprint (2% margin) on a grid of half the median "
-                              "element's x-y extent");
+                              "element's x-y extent, or with --swatch of the swatch's largest gap (so its "
+                              "own holes are not missing cover)");
   auto* region = cmd->add_option("--region", args->region,
                                  "with --plane: cover this x-y rectangle X0,Y0,X1,Y1 (for example synth's "
                                  "plane_rect) instead of the footprint; parts past it do not count")

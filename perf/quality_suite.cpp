@@ -4,7 +4,8 @@
 //
 //   quality_suite [--seeds 1,2,3] [--kinds chainmail,plain,...] [--plane 4x4] [--work DIR]
 //
-// Columns: coverage (inspect's element-scale plane coverage and its cell size), the same
+// Columns: coverage (inspect's plane coverage with the swatch, on cells as large as the swatch's
+// largest gap, and that cell size), the same
 // coverage on cells sized from the swatch (the smallest whole fraction of its longer side at
 // which the swatch covers itself at four grid phases), both over the plane asked for (synth's
 // `plane_rect`, so elements hanging past its edges neither help nor hurt), closed share

@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "spatial/box_grid.h"
+#include "spatial/convex_outline.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {
@@ -48,6 +49,46 @@ bool triangle_overlaps_box(const glm::dvec2 p[3], const Box2& box) {
     if (tmax < bmin || bmax < tmin) return false;
   }
   return true;  // the box axes were checked by the caller's cell range
+}
+
+// Cells of the nx x ny grid tiling [lo, hi] that the x-y projection of some triangle overlaps
+// (closed sets), row by row.
+std::vector<char> covered_cells(const TriMesh& mesh, const glm::dvec2& lo, const glm::dvec2& hi, int32_t nx,
+                                int32_t ny) {
+  const double cw = (hi.x - lo.x) / nx, ch = (hi.y - lo.y) / ny;
+  const int64_t total = static_cast<int64_t>(nx) * ny;
+  std::vector<std::atomic<char>> marks(total);  // written concurrently by the face loop
+
+  auto cell_range = [](double a, double b, double origin, double step, int32_t n) {
+    // Closed cells: a value on a shared border touches both cells.
+    int64_t i0 = step > 0 ? static_cast<int64_t>(std::floor((a - origin) / step)) : 0;
+    int64_t i1 = step > 0 ? static_cast<int64_t>(std::floor((b - origin) / step)) : n - 1;
+    if (step > 0 && a - origin == double(i0) * step) --i0;
+    return std::pair<int64_t, int64_t>(std::max<int64_t>(i0, 0), std::min<int64_t>(i1, n - 1));
+  };
+  // Faces only ever set marks, so relaxed atomic stores suffice.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.num_faces(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t f = r.begin(); f < r.end(); ++f) {
+      const Tri& t = mesh.triangles[f];
+      const glm::dvec2 p[3] = {glm::dvec2(mesh.positions[t[0]]), glm::dvec2(mesh.positions[t[1]]), glm::dvec2(mesh.positions[t[2]])};
+      const glm::dvec2 tlo = glm::min(p[0], glm::min(p[1], p[2])), thi = glm::max(p[0], glm::max(p[1], p[2]));
+      if (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y) continue;
+      const auto [ix0, ix1] = cell_range(tlo.x, thi.x, lo.x, cw, nx);
+      const auto [iy0, iy1] = cell_range(tlo.y, thi.y, lo.y, ch, ny);
+      for (int64_t iy = iy0; iy <= iy1; ++iy) {
+        for (int64_t ix = ix0; ix <= ix1; ++ix) {
+          std::atomic<char>& c = marks[iy * nx + ix];
+          if (c.load(std::memory_order_relaxed)) continue;
+          const Box2 box{lo.x + ix * cw, lo.y + iy * ch, lo.x + (ix + 1) * cw, lo.y + (iy + 1) * ch};
+          if (triangle_overlaps_box(p, box)) c.store(1, std::memory_order_relaxed);
+        }
+      }
+    }
+  });
+
+  std::vector<char> covered(total);
+  for (int64_t i = 0; i < total; ++i) covered[i] = marks[i].load(std::memory_order_relaxed);
+  return covered;
 }
 
 }  // namespace
@@ -85,40 +126,10 @@ PlaneCoverage plane_coverage(const TriMesh& mesh, double cell_size, const PlaneC
   out.cells_x = static_cast<int32_t>(cells_along(inner.x, cell_size));
   out.cells_y = static_cast<int32_t>(cells_along(inner.y, cell_size));
   out.cell_size = cell_size;
-  const double cw = inner.x / out.cells_x, ch = inner.y / out.cells_y;
   const int64_t total = static_cast<int64_t>(out.cells_x) * out.cells_y;
-  std::vector<std::atomic<char>> marks(total);  // written concurrently by the face loop
-
-  auto cell_range = [](double a, double b, double origin, double step, int32_t n) {
-    // Closed cells: a value on a shared border touches both cells.
-    int64_t i0 = step > 0 ? static_cast<int64_t>(std::floor((a - origin) / step)) : 0;
-    int64_t i1 = step > 0 ? static_cast<int64_t>(std::floor((b - origin) / step)) : n - 1;
-    if (step > 0 && a - origin == double(i0) * step) --i0;
-    return std::pair<int64_t, int64_t>(std::max<int64_t>(i0, 0), std::min<int64_t>(i1, n - 1));
-  };
-  // Faces only ever set marks, so relaxed atomic stores suffice.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.num_faces(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t f = r.begin(); f < r.end(); ++f) {
-      const Tri& t = mesh.triangles[f];
-      const glm::dvec2 p[3] = {glm::dvec2(mesh.positions[t[0]]), glm::dvec2(mesh.positions[t[1]]), glm::dvec2(mesh.positions[t[2]])};
-      const glm::dvec2 tlo = glm::min(p[0], glm::min(p[1], p[2])), thi = glm::max(p[0], glm::max(p[1], p[2]));
-      if (thi.x < lo.x || thi.y < lo.y || tlo.x > hi.x || tlo.y > hi.y) continue;
-      const auto [ix0, ix1] = cell_range(tlo.x, thi.x, lo.x, cw, out.cells_x);
-      const auto [iy0, iy1] = cell_range(tlo.y, thi.y, lo.y, ch, out.cells_y);
-      for (int64_t iy = iy0; iy <= iy1; ++iy) {
-        for (int64_t ix = ix0; ix <= ix1; ++ix) {
-          std::atomic<char>& c = marks[iy * out.cells_x + ix];
-          if (c.load(std::memory_order_relaxed)) continue;
-          const Box2 box{lo.x + ix * cw, lo.y + iy * ch, lo.x + (ix + 1) * cw, lo.y + (iy + 1) * ch};
-          if (triangle_overlaps_box(p, box)) c.store(1, std::memory_order_relaxed);
-        }
-      }
-    }
-  });
-
-  std::vector<char> covered(total);
+  const std::vector<char> covered = covered_cells(mesh, lo, lo + inner, out.cells_x, out.cells_y);
   int64_t count = 0;
-  for (int64_t i = 0; i < total; ++i) count += covered[i] = marks[i].load(std::memory_order_relaxed);
+  for (int64_t i = 0; i < total; ++i) count += covered[i];
   out.coverage = static_cast<double>(count) / static_cast<double>(total);
 
   // Largest gap: flood fill of uncovered cells (4-connected).
@@ -344,6 +355,48 @@ BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radi
   for (double a : covered_area) covered += a;
   out.coverage = std::min(1.0, covered / total_area);
   return out;
+}
+
+double largest_empty_square(const TriMesh& swatch, int resolution) {
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  std::vector<Vec3> used;
+  for (const Tri& t : swatch.triangles)
+    for (int32_t v : t) {
+      lo = glm::min(lo, glm::dvec2(swatch.positions[v]));
+      hi = glm::max(hi, glm::dvec2(swatch.positions[v]));
+      used.push_back(swatch.positions[v]);
+    }
+  const double side = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (used.empty() || !(side > 0.0) || resolution < 1) return 0.0;
+  const double h = side / resolution;
+  const auto nx = static_cast<int32_t>(std::max(1.0, std::ceil((hi.x - lo.x) / h)));
+  const auto ny = static_cast<int32_t>(std::max(1.0, std::ceil((hi.y - lo.y) / h)));
+  const std::vector<char> covered = covered_cells(swatch, lo, lo + h * glm::dvec2(nx, ny), nx, ny);
+  const ConvexOutline outline(used);
+  // Chessboard distance of each free pixel to the nearest pixel with geometry or outside the
+  // outline (the raster's outside counts as such), in two passes.
+  std::vector<int32_t> d(covered.size());
+  for (int32_t y = 0; y < ny; ++y)
+    for (int32_t x = 0; x < nx; ++x) {
+      const glm::dvec2 centre = lo + h * glm::dvec2(x + 0.5, y + 0.5);
+      d[static_cast<size_t>(y) * nx + x] = covered[static_cast<size_t>(y) * nx + x] || !outline.contains(centre) ? 0 : 1 << 30;
+    }
+  const auto at = [&](int32_t x, int32_t y) { return x < 0 || y < 0 || x >= nx || y >= ny ? 0 : d[static_cast<size_t>(y) * nx + x]; };
+  for (int32_t y = 0; y < ny; ++y)
+    for (int32_t x = 0; x < nx; ++x) {
+      int32_t& v = d[static_cast<size_t>(y) * nx + x];
+      if (v) v = std::min({v, at(x - 1, y) + 1, at(x - 1, y - 1) + 1, at(x, y - 1) + 1, at(x + 1, y - 1) + 1});
+    }
+  int32_t largest = 0;
+  for (int32_t y = ny - 1; y >= 0; --y)
+    for (int32_t x = nx - 1; x >= 0; --x) {
+      int32_t& v = d[static_cast<size_t>(y) * nx + x];
+      if (v) v = std::min({v, at(x + 1, y) + 1, at(x + 1, y + 1) + 1, at(x, y + 1) + 1, at(x - 1, y + 1) + 1});
+      largest = std::max(largest, v);
+    }
+  // The widest free run holds at most 2d free pixels (d its largest distance), and a free
+  // square may reach into the partly covered pixel on either side of it.
+  return largest > 0 ? (2.0 * largest + 2.0) * h : 0.0;
 }
 
 double self_covering_cell(const TriMesh& swatch, double swatch_length) {

@@ -67,6 +67,13 @@ std::vector<double> signed_heights(const std::vector<Vec3>& points, const TriMes
 BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radius,
                            const BaseCoverageOptions& options = {});
 
+//! The side of the largest axis-aligned square inside the x-y convex outline of `swatch`'s
+//! geometry that no triangle's projection overlaps, rounded up to whole pixels of a raster with
+//! `resolution` pixels along the longer side, plus one: a cell this large lies over geometry
+//! wherever it sits inside the outline, so the gaps of a sparse swatch (the holes of rings) are
+//! not counted as missing cover, while a missing element is. 0 for a mesh without faces.
+double largest_empty_square(const TriMesh& swatch, int resolution = 512);
+
 //! The smallest cell, swatch_length / n for a whole n <= 64, at which `swatch` covers its own
 //! footprint (plane_coverage 1.0) at four phases of the grid (origins a quarter cell apart, so
 //! a sparse swatch does not pass because its wires happen to cross every cell): cells sized from

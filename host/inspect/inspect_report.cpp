@@ -153,6 +153,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     timer.lap("yarns");
   }
 
+  double swatch_gap_cell = 0.0;
   if (swatch_input) {
     const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, options.swatch_name);
     int32_t count = 0;
@@ -179,6 +180,11 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
             *density / (*report.rings->radius_ratio * *report.rings->radius_ratio) * surface_area(*base_input);
     }
     const ElementMeasures sm = element_measures(swatch, swatch_elements, count);
+    // The swatch's own gaps are not missing cover. They are scaled as its edges are: elements
+    // stitched into longer ones change their extents, not their tessellation.
+    const double swatch_edge = mean_edge_length(swatch), output_edge = mean_edge_length(mesh);
+    if (options.plane && swatch_edge > 0.0 && output_edge > 0.0)
+      swatch_gap_cell = largest_empty_square(swatch) * output_edge / swatch_edge;
     InspectReport::Swatch s;
     s.elements = count;
     s.intersecting_face_pairs = static_cast<int64_t>(find_intersecting_faces(swatch, swatch_elements).different_elements.size());
@@ -189,7 +195,11 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   }
 
   if (options.plane) {
-    const double cell = 0.5 * positive_median(measures.xy_extent, 0.01 * std::max(hi.x - lo.x, hi.y - lo.y));
+    // With a swatch, cells as large as its largest gap; without, half the median element (which
+    // for yarns stitched into long runs is far coarser).
+    const double cell = swatch_gap_cell > 0.0
+                            ? swatch_gap_cell
+                            : 0.5 * positive_median(measures.xy_extent, 0.01 * std::max(hi.x - lo.x, hi.y - lo.y));
     report.plane = plane_coverage(mesh, cell > 0.0 ? cell : 1.0, options.plane_options);
     timer.lap("plane coverage");
   }

@@ -97,19 +97,22 @@ std::vector<uint8_t> dilated(const std::vector<uint8_t>& cells, const CellWindow
 // it, and an input that has none (refused as a whole; or every input, when `representative` is
 // empty) at least some kept geometry. So a weft
 // that yielded to an output weft ending short of it leaves its cells uncovered even where warps
-// lie over them, and the driver seeds there again. Cells without swatch geometry are covered.
+// lie over them, and the driver seeds there again. Cells without swatch geometry are covered
+// inside its outline, and outside it (a turned swatch's corners) only near kept geometry.
 // Swatch elements at the patch's translation that were left out (`left_out`: centred past the
 // domain's edge, or crossing a surface patch's edge) are accounted for where kept geometry lies
-// within half their width: a narrower bare strip along the plane's edge is what the centre rule
-// leaves, a wider one has room for an element. Without this, the cells under a yarn that did not
+// within part of their width: half across a surface patch's edge (`whole_inputs_only`); a quarter
+// at the plane's edge, where a patch seeded again places elements centred up to a quarter past
+// it, so a wider bare strip there is seeded again. Without this, the cells under a yarn that did not
 // fit in a surface patch counted as covered and stayed bare (a tenth of the bunny under the
 // small weave).
 std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
                                    const std::vector<int32_t>& representative, const std::vector<TriMesh>& left_out,
-                                   const Rect2& footprint, const PlaneGrid& grid,
-                                   const std::function<bool(const glm::dvec2&)>& inside_domain) {
+                                   const Rect2& footprint, const QuiltSwatch& swatch, const PlaneGrid& grid,
+                                   const std::function<bool(const glm::dvec2&)>& inside_domain, bool whole_inputs_only) {
+  const double left_out_reach = whole_inputs_only ? 0.5 : 0.25;
   // Only cells under the footprint can be covered; what decides them lies within r cells of
-  // them, r the most dilations below (1, or a left-out element's half width).
+  // them, r the most dilations below (1, or a left-out element's reach).
   const int x0 = grid.column(footprint.lo.x), x1 = grid.column(footprint.hi.x);
   const int y0 = grid.row(footprint.lo.y), y1 = grid.row(footprint.hi.y);
   std::vector<int> half_widths;
@@ -117,7 +120,10 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   for (const TriMesh& m : left_out) {
     const Rect2 b = xy_bounds(m);
     const glm::dvec2 size = b.hi - b.lo;
-    half_widths.push_back(std::max(1, static_cast<int>(0.5 * std::min(size.x, size.y) / grid.cell)));
+    // Across a surface patch's edge, by its bounds; at the plane's edge, by its narrowest width,
+    // since a diagonal yarn's bounds are nearly as wide as it is long.
+    const double width = whole_inputs_only ? std::min(size.x, size.y) : ConvexOutline(m.positions).width();
+    half_widths.push_back(std::max(1, static_cast<int>(left_out_reach * width / grid.cell)));
     reach = std::max(reach, half_widths.back());
   }
   const CellWindow window{std::max(0, x0 - reach), std::max(0, y0 - reach), std::min(grid.nx - 1, x1 + reach),
@@ -168,11 +174,15 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   // A cell next to the footprint's edge is where the next patch's seam goes, unless the domain
   // ends there.
   std::vector<uint8_t> covered(static_cast<size_t>(grid.nx) * grid.ny, 0);
+  // Past the swatch's outline (a turned swatch's corners) it has no geometry by its shape, not
+  // by its pattern: such a cell needs kept geometry within a cell.
+  const double slack = std::max(0.5 * grid.cell, swatch.outline_slack);
   const auto settled = [&](const glm::dvec2& p) { return footprint.contains(p) || !inside_domain(p); };
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       const glm::dvec2 centre = grid.origin + grid.cell * glm::dvec2(x + 0.5, y + 0.5);
       if (!footprint.contains(centre) || !inside_domain(centre) || unaccounted[window.index(x, y)]) continue;
+      if (!near_kept[window.index(x, y)] && !swatch.outline.contains(centre - footprint.lo, slack)) continue;
       const double d = grid.cell;
       if (settled(centre + glm::dvec2(d, 0.0)) && settled(centre - glm::dvec2(d, 0.0)) &&
           settled(centre + glm::dvec2(0.0, d)) && settled(centre - glm::dvec2(0.0, d)))
@@ -270,9 +280,18 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
   }
   const Rect2 bounds = xy_bounds(swatch.mesh);
   swatch.extent = bounds.hi - bounds.lo;
+  std::vector<Vec3> from_corner = swatch.mesh.positions;
+  for (Vec3& p : from_corner) p -= Vec3(bounds.lo, 0.0);
+  swatch.outline = ConvexOutline(from_corner);
+  std::vector<double> sides;
   for (const TriMesh& e : swatch.elements) {
     swatch.element_bounds.push_back(xy_bounds(e));
+    sides.push_back(ConvexOutline(e.positions).width());
     swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();
+  }
+  if (!sides.empty()) {
+    std::nth_element(sides.begin(), sides.begin() + sides.size() / 2, sides.end());
+    swatch.outline_slack = 0.5 * sides[sides.size() / 2];
   }
   const TriMesh joined = join_elements(swatch.elements);
   swatch.unfolded_elements =
@@ -557,8 +576,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   }
   add_unmerged_inputs(ctx, in_partnered, outcome);
   if (!request.account_per_input) ctx.representative.clear();
-  outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out, footprint, grid,
-                                  request.inside_domain);
+  outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out, footprint,
+                                  swatch, grid, request.inside_domain, request.whole_inputs_only);
   return outcome;
 }
 

@@ -25,6 +25,7 @@
 
 #include "core/error.h"
 #include "mesh/tri_mesh.h"
+#include "spatial/convex_outline.h"
 #include "quilt/correspondence.h"
 #include "quilt/element_deformation.h"
 #include "quilt/merging/element_merging.h"
@@ -67,6 +68,11 @@ struct QuiltSwatch {
   std::vector<TriMesh> elements;      //!< its elements, in element order
   std::vector<Rect2> element_bounds;  //!< x-y bounds of each element
   glm::dvec2 extent{0.0};             //!< x-y size of the swatch
+  ConvexOutline outline;              //!< x-y convex hull of its geometry, from its bounds' low corner
+  //! Half the median element's x-y width (ConvexOutline::width): how far past the outline a cell
+  //! may lie and still count as under the swatch (the rows of an upright mail end in rounded
+  //! corners).
+  double outline_slack = 0.0;
   double mean_edge = 1.0;             //!< mean edge length: the unit of Eq. 1 distances
   bool closed_elements = true;        //!< every element a closed 2-manifold
   bool unfolded_elements = true;      //!< no element passes through itself
@@ -131,8 +137,8 @@ struct PatchOutcome {
   //! the layer (the element it was added as, merged into or yielded to; with
   //! account_per_input false, any kept geometry) lies within a cell of it; under a swatch element
   //! left out at the domain's or the patch's edge, kept geometry within half its width. Cells
-  //! where the placed swatch has no geometry are covered (a sparse swatch is mostly empty by
-  //! design). A refused
+  //! inside the swatch's outline where it has no geometry are covered (a sparse swatch is mostly
+  //! empty by design); cells outside it (the corners of a turned swatch) are not. A refused
   //! merge, a rejected input or an input that yielded to an element ending short of it leaves
   //! its cells uncovered, so the driver seeds there again.
   std::vector<uint8_t> covered;

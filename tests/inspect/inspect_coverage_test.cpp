@@ -128,6 +128,71 @@ TEST(PlaneCoverage, FullAndHalfCoveredPlane) {
   EXPECT_LT(half.plane->largest_gap, 0.5);
 }
 
+// A flat rectangle [x0, x1] x [y0, y1] at z = 0, as two triangles.
+void add_rectangle(TriMesh& m, double x0, double y0, double x1, double y1) {
+  const auto b = static_cast<int32_t>(m.positions.size());
+  m.positions.insert(m.positions.end(), {{x0, y0, 0.0}, {x1, y0, 0.0}, {x1, y1, 0.0}, {x0, y1, 0.0}});
+  m.triangles.push_back({b, b + 1, b + 2});
+  m.triangles.push_back({b, b + 2, b + 3});
+}
+
+TEST(LargestEmptySquare, GapBetweenTwoBarsAndHoleOfAFrame) {
+  // Two bars 1 apart, 6 tall: the largest free square is 1 across; the raster rounds up by at
+  // most three of its pixels (6 / 512 each), never down.
+  TriMesh bars;
+  add_rectangle(bars, 0.0, 0.0, 2.0, 6.0);
+  add_rectangle(bars, 3.0, 0.0, 5.0, 6.0);
+  const double pixel = 6.0 / 512;
+  EXPECT_GE(largest_empty_square(bars), 1.0);
+  EXPECT_LE(largest_empty_square(bars), 1.0 + 3.0 * pixel);
+  // A square frame of side 10 round a hole of side 6.
+  TriMesh frame;
+  add_rectangle(frame, 0.0, 0.0, 10.0, 2.0);
+  add_rectangle(frame, 0.0, 8.0, 10.0, 10.0);
+  add_rectangle(frame, 0.0, 2.0, 2.0, 8.0);
+  add_rectangle(frame, 8.0, 2.0, 10.0, 8.0);
+  EXPECT_GE(largest_empty_square(frame), 6.0);
+  EXPECT_LE(largest_empty_square(frame), 6.0 + 3.0 * 10.0 / 512);
+  EXPECT_EQ(largest_empty_square(TriMesh{}), 0.0);
+}
+
+TEST(LargestEmptySquare, LeavesOutTheCornersOfATurnedLayout) {
+  // Squares 0.5 across at pitch 1 filling a diamond |x| + |y| <= 5: inside its outline the free
+  // squares are 0.5 across, while each corner of its bounding box is a free triangle with legs
+  // of 5 that would hold a square of 2.5.
+  TriMesh diamond;
+  for (int j = -5; j <= 5; ++j)
+    for (int i = -5; i <= 5; ++i)
+      if (std::abs(i) + std::abs(j) <= 5) add_rectangle(diamond, i - 0.25, j - 0.25, i + 0.25, j + 0.25);
+  const double side = largest_empty_square(diamond);
+  EXPECT_GE(side, 0.5);
+  EXPECT_LE(side, 0.5 + 3.0 * 10.5 / 512);
+}
+
+// A sparse swatch's own holes are not missing cover: rings far apart (holes 1.4 across, gaps of
+// 2 between rings) quilted as themselves cover their plane, and a missing ring is a gap.
+TEST(PlaneCoverage, CellsFromTheSwatchsLargestGap) {
+  const auto rings = [](int skip) {
+    TriMesh m;
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < 6; ++i)
+        if (j * 6 + i != skip) add_ring(m, {4.0 * i, 4.0 * j, 0.0}, 1.0, 0.3, 32, 8);
+    return m;
+  };
+  const TriMesh swatch = rings(-1);
+  InspectOptions options;
+  options.plane = true;
+  // Half the median ring (1.3 across) fits inside the gaps between rings: coverage well below 1.
+  EXPECT_LT(inspect_mesh(swatch, options).plane->coverage, 0.9);
+  const InspectReport self = inspect_mesh(swatch, options, &swatch);
+  EXPECT_NEAR(self.plane->cell_size, largest_empty_square(swatch), 1e-12);
+  EXPECT_EQ(self.plane->coverage, 1.0);
+  // One ring of 36 in the middle missing: its place is a gap at the swatch's cells.
+  const InspectReport missing = inspect_mesh(rings(14), options, &swatch);
+  EXPECT_LT(missing.plane->coverage, 0.99);
+  EXPECT_GT(missing.plane->largest_gap, 0.0);
+}
+
 // A region replaces the footprint: the same rings measured over the plane they were meant to
 // cover, twice as wide as they are, and over a region inside them.
 TEST(PlaneCoverage, RegionReplacesTheFootprint) {
