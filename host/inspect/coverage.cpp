@@ -396,7 +396,7 @@ double largest_empty_square(const TriMesh& swatch, int resolution) {
     }
   // The widest free run holds at most 2d free pixels (d its largest distance), and a free
   // square may reach into the partly covered pixel on either side of it.
-  return largest > 0 ? (2.0 * largest + 2.0) * h : 0.0;
+  return (2.0 * largest + 2.0) * h;
 }
 
 double self_covering_cell(const TriMesh& swatch, double swatch_length) {

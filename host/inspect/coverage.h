@@ -71,7 +71,8 @@ BaseCoverage base_coverage(const TriMesh& mesh, const TriMesh& base, double radi
 //! geometry that no triangle's projection overlaps, rounded up to whole pixels of a raster with
 //! `resolution` pixels along the longer side, plus one: a cell this large lies over geometry
 //! wherever it sits inside the outline, so the gaps of a sparse swatch (the holes of rings) are
-//! not counted as missing cover, while a missing element is. 0 for a mesh without faces.
+//! not counted as missing cover, while a missing element is. Two pixels for a swatch without a
+//! free pixel (a sheet); 0 for a mesh without faces.
 double largest_empty_square(const TriMesh& swatch, int resolution = 512);
 
 //! The smallest cell, swatch_length / n for a whole n <= 64, at which `swatch` covers its own

@@ -153,6 +153,10 @@ TEST(LargestEmptySquare, GapBetweenTwoBarsAndHoleOfAFrame) {
   add_rectangle(frame, 8.0, 2.0, 10.0, 8.0);
   EXPECT_GE(largest_empty_square(frame), 6.0);
   EXPECT_LE(largest_empty_square(frame), 6.0 + 3.0 * 10.0 / 512);
+  // A sheet has no free pixel: two pixels, so that any gap between copies of it shows.
+  TriMesh sheet;
+  add_rectangle(sheet, 0.0, 0.0, 4.0, 2.0);
+  EXPECT_DOUBLE_EQ(largest_empty_square(sheet), 2.0 * 4.0 / 512);
   EXPECT_EQ(largest_empty_square(TriMesh{}), 0.0);
 }
 
