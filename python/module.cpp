@@ -77,6 +77,19 @@ TriMesh mesh_from(const Array3d& vertices, const Array3i& faces, const char* wha
   return m;
 }
 
+// Directions drawn at points over the base, as synth's --field file's `point` entries.
+std::vector<FieldConstraint> field_constraints(const Array3d& points, const Array3d& directions, const TriMesh& base) {
+  const auto rows = [](const Array3d& a, const char* what) {
+    if (a.ndim() != 2 || a.shape(1) != 3)
+      throw InputError(std::string("field: ") + what + " must be a (K, 3) array", ErrorKind::invalid_option);
+    std::vector<Vec3> out;
+    const auto v = a.unchecked<2>();
+    for (py::ssize_t i = 0; i < v.shape(0); ++i) out.emplace_back(v(i, 0), v(i, 1), v(i, 2));
+    return out;
+  };
+  return constraints_at_points(rows(points, "points"), rows(directions, "directions"), base, "field");
+}
+
 py::dict dict_of(const TriMesh& m) {
   py::array_t<double> vertices({static_cast<py::ssize_t>(m.num_vertices()), py::ssize_t{3}});
   py::array_t<int32_t> faces({static_cast<py::ssize_t>(m.num_faces()), py::ssize_t{3}});
@@ -263,7 +276,8 @@ PYBIND11_MODULE(_meshquilt, m) {
          std::optional<Array3i> base_faces, double scale, uint64_t seed, const std::string& backend,
          int cells, bool cleanup, int symmetry, double shell_height, const std::string& embed,
          bool per_patch_charts, bool minimize_distortion, bool keep_texture,
-         std::optional<py::function> progress, CancelToken* cancel) {
+         std::optional<py::function> progress, CancelToken* cancel, std::optional<Array3d> field_points,
+         std::optional<Array3d> field_directions) {
         const auto start = std::chrono::steady_clock::now();
         const bool curved = base_vertices.has_value();
         if (curved == plane.has_value())
@@ -284,8 +298,12 @@ PYBIND11_MODULE(_meshquilt, m) {
         if (embed != "shell" && embed != "normal")
           throw InputError("--embed: expected shell or normal, got '" + embed + "'",
                            ErrorKind::invalid_option);
+        if (!curved && field_points)
+          throw InputError("synth: a field needs base=(vertices, faces)", ErrorKind::invalid_option);
         TriMesh base;
         if (curved) base = prepare_base(mesh_from(*base_vertices, *base_faces, "base"), "base");
+        const std::vector<FieldConstraint> constraints =
+            field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
         Job job;
         if (cancel) job.token = cancel;
         QuiltOptions common;
@@ -326,7 +344,7 @@ PYBIND11_MODULE(_meshquilt, m) {
               options.shared_layout = !per_patch_charts;
               options.symmetry = symmetry;
               const BaseSurface surface(base);
-              const GuidanceField field = interpolate_field(surface, {});
+              const GuidanceField field = interpolate_field(surface, constraints);
               ShellEmbeddingOptions shell_options;
               ShellTexture shell_texture;
               shell_options.stretch.seed = seed;
@@ -379,7 +397,35 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("symmetry") = 0,
       py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
       py::arg("minimize_distortion") = true, py::arg("keep_texture") = false,
-      py::arg("progress") = py::none(), py::arg("cancel") = nullptr);
+      py::arg("progress") = py::none(), py::arg("cancel") = nullptr, py::arg("field_points") = py::none(),
+      py::arg("field_directions") = py::none());
+
+  m.def(
+      "guidance",
+      [](const Array3d& base_vertices, const Array3i& base_faces, std::optional<Array3d> field_points,
+         std::optional<Array3d> field_directions) {
+        const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
+        const std::vector<FieldConstraint> constraints =
+            field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
+        const BaseSurface surface(base);
+        const GuidanceField field = interpolate_field(surface, constraints);
+        const auto faces = static_cast<py::ssize_t>(base.num_faces());
+        py::array_t<double> centres({faces, py::ssize_t{3}}), directions({faces, py::ssize_t{3}});
+        auto c = centres.mutable_unchecked<2>();
+        auto d = directions.mutable_unchecked<2>();
+        for (py::ssize_t f = 0; f < faces; ++f) {
+          const Tri& t = base.triangles[f];
+          const Vec3 centre = (base.positions[t[0]] + base.positions[t[1]] + base.positions[t[2]]) / 3.0;
+          const Vec3 along = field.at(surface, SurfacePoint{static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)});
+          for (int k = 0; k < 3; ++k) {
+            c(f, k) = centre[k];
+            d(f, k) = along[k];
+          }
+        }
+        return py::make_tuple(centres, directions);
+      },
+      py::arg("base_vertices"), py::arg("base_faces"), py::arg("field_points") = py::none(),
+      py::arg("field_directions") = py::none());
 
   m.def(
       "embed",

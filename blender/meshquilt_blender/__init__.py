@@ -16,6 +16,7 @@ import base64
 
 import bpy
 import numpy as np
+from mathutils import Vector
 
 from . import job as quilt_job
 
@@ -49,6 +50,10 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
     shell_height: bpy.props.FloatProperty(name="Shell height", default=0.0, min=0.0,
                                           description="Layer height in base units (0: the swatch's own)")
     select_share: bpy.props.FloatProperty(name="Share", default=0.1, min=0.0, max=1.0)
+    guide_object: bpy.props.PointerProperty(
+        name="Guide", type=bpy.types.Object, poll=lambda self, obj: obj.type in {"CURVE", "GPENCIL"},
+        description="A curve or grease-pencil object whose strokes, drawn over the base, orient the "
+                    "swatch; empty: the default field")
 
 
 def settings_of(context):
@@ -76,14 +81,57 @@ def mesh_arrays(obj, depsgraph=None):
     return vertices, faces.reshape(-1, 3)
 
 
+def stroke_polylines(guide, depsgraph=None):
+    """World-space point lists of a guide object's strokes: a curve's splines as Blender tessellates
+    them, or a grease-pencil object's strokes in the current frame."""
+    matrix = np.array(guide.matrix_world)
+    lines = []
+    if guide.type == "GPENCIL":
+        for layer in guide.data.layers:
+            frame = layer.active_frame
+            for stroke in (frame.strokes if frame else []):
+                lines.append(np.array([tuple(p.co) for p in stroke.points], dtype=np.float64).reshape(-1, 3))
+    else:
+        source = guide.evaluated_get(depsgraph) if depsgraph else guide
+        mesh = source.to_mesh()
+        points = np.empty(len(mesh.vertices) * 3)
+        mesh.vertices.foreach_get("co", points)
+        points = points.reshape(-1, 3)
+        # Each edge of the tessellated curve is a piece of a stroke, in the spline's order.
+        lines += [points[list(edge.vertices)] for edge in mesh.edges]
+        source.to_mesh_clear()
+    return [line @ matrix[:3, :3].T + matrix[:3, 3] for line in lines if len(line) >= 2]
+
+
+def guide_field(guide, base, depsgraph=None):
+    """(points, directions) for synth's field: each stroke segment's midpoint moved onto the base
+    (its closest point) with the segment's direction, in world space; None without segments."""
+    to_local = base.matrix_world.inverted()
+    to_world = base.matrix_world
+    points, directions = [], []
+    for line in stroke_polylines(guide, depsgraph):
+        for a, b in zip(line[:-1], line[1:]):
+            if np.linalg.norm(b - a) == 0.0:
+                continue
+            found, location, _, _ = base.closest_point_on_mesh(to_local @ Vector(0.5 * (a + b)))
+            if not found:
+                continue
+            points.append(tuple(to_world @ location))
+            directions.append(tuple(b - a))
+    if not points:
+        return None
+    return np.array(points, dtype=np.float64), np.array(directions, dtype=np.float64)
+
+
 def make_job(context, base):
     s, prefs = settings_of(context), preferences(context)
     swatch = mesh_arrays(s.swatch_object) if s.swatch_object else None
+    field = guide_field(s.guide_object, base) if s.guide_object else None
     return quilt_job.QuiltJob(mesh_arrays(base), swatch=swatch, swatch_kind=s.swatch_kind,
                               swatch_options={"preset": "small"} if s.small else {}, scale=s.scale, seed=s.seed,
                               minimize_distortion=s.minimize_distortion, shell_height=s.shell_height,
                               module_path=prefs.module_path if prefs else "",
-                              executable=prefs.executable if prefs else "meshquilt")
+                              executable=prefs.executable if prefs else "meshquilt", field=field)
 
 
 def add_result_object(context, base, result):
@@ -254,6 +302,48 @@ class MESHQUILT_OT_follow_base(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class MESHQUILT_OT_preview_field(bpy.types.Operator):
+    """Show the guidance field over the active mesh as short lines, one per face (the guide's
+    strokes spread over the surface, or the default field): an object beside the base, replaced
+    on each preview"""
+    bl_idname = "meshquilt.preview_field"
+    bl_label = "Preview field"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return context.active_object is not None and context.active_object.type == "MESH"
+
+    def execute(self, context):
+        base = context.active_object
+        prefs = preferences(context)
+        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        if module is None:
+            self.report({"ERROR"}, "meshquilt: the field preview needs the Python module (see the preferences)")
+            return {"CANCELLED"}
+        s = settings_of(context)
+        vertices, faces = mesh_arrays(base)
+        try:
+            field = guide_field(s.guide_object, base) if s.guide_object else None
+            centres, directions = module.guidance((vertices, faces), field=field)
+        except module.Error as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        edges = np.linalg.norm(vertices[faces[:, 1]] - vertices[faces[:, 0]], axis=1)
+        length = 0.5 * float(np.mean(edges)) if len(edges) else 1.0
+        name = base.name + "_field"
+        if name in bpy.data.objects:
+            bpy.data.objects.remove(bpy.data.objects[name])
+        mesh = bpy.data.meshes.new(name)
+        ends = np.empty((2 * len(centres), 3))
+        ends[0::2], ends[1::2] = centres, centres + length * directions
+        mesh.from_pydata(ends.tolist(), [(2 * k, 2 * k + 1) for k in range(len(centres))], [])
+        obj = bpy.data.objects.new(name, mesh)
+        context.collection.objects.link(obj)
+        self.report({"INFO"}, "meshquilt: %d field lines in %s" % (len(centres), name))
+        return {"FINISHED"}
+
+
 class VIEW3D_PT_meshquilt(bpy.types.Panel):
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
@@ -271,6 +361,9 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
         layout.prop(s, "seed")
         layout.prop(s, "minimize_distortion")
         layout.prop(s, "shell_height")
+        row = layout.row(align=True)
+        row.prop(s, "guide_object")
+        row.operator(MESHQUILT_OT_preview_field.bl_idname, text="", icon="ORIENTATION_NORMAL")
         layout.operator(MESHQUILT_OT_create.bl_idname)
         layout.operator(MESHQUILT_OT_follow_base.bl_idname)
         box = layout.box()
@@ -279,7 +372,7 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
 
 
 classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
-           VIEW3D_PT_meshquilt)
+           MESHQUILT_OT_preview_field, VIEW3D_PT_meshquilt)
 
 
 def register():

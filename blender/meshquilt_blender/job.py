@@ -58,8 +58,9 @@ class QuiltJob:
     it and leaves `cancelled` set."""
 
     def __init__(self, base, swatch=None, swatch_kind="chainmail", swatch_options=None, scale=0.15, seed=1,
-                 minimize_distortion=True, shell_height=0.0, module_path="", executable="meshquilt"):
+                 minimize_distortion=True, shell_height=0.0, module_path="", executable="meshquilt", field=None):
         self.base = base  # (vertices, faces) as numpy arrays
+        self.field = field  # (points, directions) drawn over the base, or None for the default field
         self.swatch = swatch  # (vertices, faces), or None for a built-in kind
         self.swatch_kind = swatch_kind
         self.swatch_options = dict(swatch_options or {})
@@ -113,7 +114,7 @@ class QuiltJob:
             swatch = m.swatch(self.swatch_kind, **self.swatch_options)
         r = m.synth(swatch, base=self.base, scale=self.scale, seed=self.seed,
                     minimize_distortion=self.minimize_distortion, shell_height=self.shell_height,
-                    keep_texture=True, progress=self._progress, cancel=self._token)
+                    keep_texture=True, progress=self._progress, cancel=self._token, field=self.field)
         return {"vertices": r.vertices, "faces": r.faces, "element": r.element, "source": r.source,
                 "texture": r.texture}
 
@@ -138,6 +139,13 @@ class QuiltJob:
                 args += ["--shell-height", str(self.shell_height)]
             if not self.minimize_distortion:
                 args.append("--no-distortion-min")
+            if self.field is not None:
+                # The same directions as a field file's `point` entries.
+                field = os.path.join(folder, "field.json")
+                with open(field, "w") as out:
+                    json.dump({"directions": [{"point": [float(x) for x in p], "direction": [float(x) for x in d]}
+                                              for p, d in zip(*self.field)]}, out)
+                args += ["--field", field]
             # --progress json: one JSON line per patch on stdout (done, total, eta_s).
             self._process = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
             for line in self._process.stdout:

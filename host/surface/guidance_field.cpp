@@ -20,6 +20,23 @@
 namespace meshquilt {
 namespace {
 
+// The base vertex nearest p; ties (and a difference that overflows) go to the first; -1 without
+// vertices. hypot, not glm::distance: the squares overflow for a point beyond about 1e154, every
+// distance would be infinite and no vertex chosen.
+int32_t nearest_vertex(const TriMesh& base, const Vec3& p) {
+  int32_t nearest = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t v = 0; v < base.num_vertices(); ++v) {
+    const Vec3 d = p - base.positions[v];
+    const double distance = std::hypot(d.x, d.y, d.z);
+    if (nearest < 0 || distance < best) {
+      best = distance;
+      nearest = static_cast<int32_t>(v);
+    }
+  }
+  return nearest;
+}
+
 Vec3 tangent_part(const Vec3& d, const Vec3& n) { return d - glm::dot(d, n) * n; }
 
 // Any unit vector perpendicular to n.
@@ -105,23 +122,34 @@ std::vector<FieldConstraint> parse_field(std::string_view text, const std::strin
                          ErrorKind::invalid_option);
       c.vertex = static_cast<int32_t>(v);
     } else if (entry.contains("point")) {
-      const Vec3 p = parse_vector(entry["point"], "point", where);
-      // hypot, not glm::distance: the squares overflow for a point beyond about 1e154, every
-      // distance would be infinite and no vertex chosen. Ties (and a difference that overflows
-      // itself) go to the first vertex.
-      double best = std::numeric_limits<double>::infinity();
-      for (size_t v = 0; v < base.num_vertices(); ++v) {
-        const Vec3 d = p - base.positions[v];
-        const double distance = std::hypot(d.x, d.y, d.z);
-        if (c.vertex < 0 || distance < best) {
-          best = distance;
-          c.vertex = static_cast<int32_t>(v);
-        }
-      }
+      c.vertex = nearest_vertex(base, parse_vector(entry["point"], "point", where));
       if (c.vertex < 0) throw InputError(where + ": the base has no vertices", ErrorKind::invalid_option);
     } else {
       throw InputError(where + ": needs a 'vertex' or a 'point'", ErrorKind::invalid_option);
     }
+    constraints.push_back(c);
+  }
+  return constraints;
+}
+
+std::vector<FieldConstraint> constraints_at_points(const std::vector<Vec3>& points, const std::vector<Vec3>& directions,
+                                                  const TriMesh& base, const std::string& name) {
+  if (points.size() != directions.size())
+    throw InputError(name + ": " + std::to_string(points.size()) + " points but " + std::to_string(directions.size()) +
+                         " directions",
+                     ErrorKind::invalid_option);
+  std::vector<FieldConstraint> constraints;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const std::string where = name + ": direction " + std::to_string(k);
+    const Vec3& p = points[k];
+    const Vec3& d = directions[k];
+    if (!std::isfinite(p.x + p.y + p.z) || !std::isfinite(d.x + d.y + d.z))
+      throw InputError(where + ": not finite", ErrorKind::invalid_option);
+    if (glm::length(d) == 0.0) throw InputError(where + ": the direction is zero", ErrorKind::invalid_option);
+    FieldConstraint c;
+    c.direction = d;
+    c.vertex = nearest_vertex(base, p);
+    if (c.vertex < 0) throw InputError(where + ": the base has no vertices", ErrorKind::invalid_option);
     constraints.push_back(c);
   }
   return constraints;

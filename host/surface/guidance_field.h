@@ -27,6 +27,13 @@ struct FieldConstraint {
 //!        base without vertices.
 std::vector<FieldConstraint> parse_field(std::string_view text, const std::string& name, const TriMesh& base);
 
+//! Directions given at surface points (a stroke drawn over the base), each at the base vertex
+//! nearest its point, as a field file's `point` entries are. `name` starts every message.
+//! \throw InputError(invalid_option) "NAME: problem" for counts that differ, a non-finite point
+//!        or direction, a zero direction, or a base without vertices.
+std::vector<FieldConstraint> constraints_at_points(const std::vector<Vec3>& points, const std::vector<Vec3>& directions,
+                                                  const TriMesh& base, const std::string& name);
+
 //! Reads a field file and parses it with parse_field.
 //! \throw IoError(file_unreadable) when the file cannot be read; what parse_field throws.
 std::vector<FieldConstraint> read_field_file(const std::filesystem::path& file, const TriMesh& base);

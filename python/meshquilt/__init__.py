@@ -19,7 +19,7 @@ import numpy as np
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "inspect", "render", "edit",
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "inspect", "render", "edit",
            "read", "write", "embed"]
 
 
@@ -44,6 +44,8 @@ class Result(Mesh):
 
 
 MeshLike = Union[Mesh, Tuple[Any, Any]]
+#: Directions drawn over a base: (points, directions), two (K, 3) arrays.
+Field = Tuple[Any, Any]
 
 
 def _arrays(mesh: MeshLike, what: str) -> Tuple[np.ndarray, np.ndarray]:
@@ -57,6 +59,14 @@ def _arrays(mesh: MeshLike, what: str) -> Tuple[np.ndarray, np.ndarray]:
     vertices = np.ascontiguousarray(vertices, dtype=np.float64)
     faces = np.ascontiguousarray(faces, dtype=np.int32)
     return vertices, faces
+
+
+def _field_arrays(field: Optional[Field]) -> Tuple[Optional[np.ndarray], Optional[np.ndarray]]:
+    if field is None:
+        return None, None
+    points, directions = field
+    return (np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3),
+            np.ascontiguousarray(directions, dtype=np.float64).reshape(-1, 3))
 
 
 def _mesh(d: dict, cls=Mesh, **extra) -> Mesh:
@@ -76,14 +86,17 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
           cells: int = 16, cleanup: bool = True, symmetry: int = 0, shell_height: float = 0.0,
           embed: str = "shell", per_patch_charts: bool = False, minimize_distortion: bool = True,
           keep_texture: bool = False, progress: Optional[Callable[[float, float], None]] = None,
-          cancel: Optional[CancelToken] = None) -> Result:
+          cancel: Optional[CancelToken] = None, field: Optional[Field] = None) -> Result:
     """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
     swatch extents, or over `base` at `scale` (the swatch's longer side over the base's bounding-box
     diagonal), as `meshquilt synth` does with the same options: the same seed gives the same
     vertices and faces. minimize_distortion=False is synth's --no-distortion-min. keep_texture
     (over a base) also returns the layer in texture space, the bytes of `--write-texture`'s file,
-    for `embed` over the base posed or edited. `progress(share, seconds_left)` is called after each patch (seconds_left is
-    -1 until something is covered); raising in it cancels the job. The engine runs without the GIL."""
+    for `embed` over the base posed or edited. `field` = (points, directions), two (K, 3) arrays:
+    directions drawn over the base, each held at the base vertex nearest its point (synth's
+    --field file with `point` entries); see `guidance`. `progress(share, seconds_left)` is called
+    after each patch (seconds_left is -1 until something is covered); raising in it cancels the
+    job. The engine runs without the GIL."""
     if (plane is None) == (base is None):
         raise TypeError("synth: give plane=(width, height) or base=(vertices, faces)")
     sv = sf = bv = bf = None
@@ -91,10 +104,20 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
         sv, sf = _arrays(swatch, "swatch")
     if base is not None:
         bv, bf = _arrays(base, "base")
+    fp, fd = _field_arrays(field)
     d = _meshquilt.synth(sv, sf, None if plane is None else (float(plane[0]), float(plane[1])), bv, bf, scale, seed,
                          backend, cells, cleanup, symmetry, shell_height, embed, per_patch_charts,
-                         minimize_distortion, keep_texture, progress, cancel)
+                         minimize_distortion, keep_texture, progress, cancel, fp, fd)
     return _mesh(d, Result, stats=d["stats"], texture=d.get("texture"))
+
+
+def guidance(base: MeshLike, field: Optional[Field] = None) -> Tuple[np.ndarray, np.ndarray]:
+    """The guidance field synth spreads over `base` from `field` (or its default without one):
+    (centres, directions), per face of the welded base its centroid and the field there, unit and
+    tangent, for drawing it as short lines before quilting."""
+    bv, bf = _arrays(base, "base")
+    fp, fd = _field_arrays(field)
+    return _meshquilt.guidance(bv, bf, fp, fd)
 
 
 def inspect(mesh: MeshLike) -> Dict[str, Any]:

@@ -2,7 +2,8 @@
     blender -b --factory-startup --python-exit-code 1 --python test_addon.py -- MODULE_FOLDER SOURCE MESHQUILT
 It enables the add-on, quilts the default cube with the small chain mail through the job object
 and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
-and finds the scene unchanged, follows the base after it is stretched, selects elements at random, and parses the extension manifest."""
+and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows a guide
+curve drawn over the base and previews its field, and parses the extension manifest."""
 import os
 import sys
 import tomllib
@@ -95,6 +96,44 @@ quilt_obj.data.vertices.foreach_get("co", moved)
 stretched = meshquilt.embed(job_texture, meshquilt_blender.mesh_arrays(cube))
 check(np.allclose(moved.reshape(-1, 3), stretched.vertices, atol=1e-5), "the layer follows the stretched cube")
 check(not np.allclose(moved.reshape(-1, 3), expected.vertices, atol=1e-3), "and has moved with it")
+
+# A guide curve drawn across the cube's top, diagonally: its strokes land on the surface and
+# orient the swatch; the job's result is the module's with that field, and the preview draws it.
+for v in cube.data.vertices:
+    v.co.x /= 1.3
+curve_data = bpy.data.curves.new("guide", type="CURVE")
+spline = curve_data.splines.new("POLY")
+spline.points.add(3)
+for k, point in enumerate(spline.points):
+    t = -0.8 + 1.6 * k / 3
+    point.co = (t, t, 1.3, 1.0)
+guide = bpy.data.objects.new("guide", curve_data)
+bpy.context.collection.objects.link(guide)
+settings.guide_object, settings.scale = guide, 0.4
+bpy.context.view_layer.objects.active = cube
+job = meshquilt_blender.make_job(bpy.context, cube)
+points, directions = job.field
+check(len(points) == 3 and np.allclose(points[:, 2], 1.0) and np.abs(points[:, :2]).max() < 1.0,
+      "the guide's three segments land on the cube's top")
+check(np.allclose(directions[:, 0], directions[:, 1]) and np.allclose(directions[:, 2], 0.0),
+      "each runs along the curve")
+check(job.start().wait(600) and job.error is None, "a guided job quilts the cube")
+vertices, faces = meshquilt_blender.mesh_arrays(cube)
+guided = meshquilt.synth(meshquilt.swatch("chainmail", preset="small"), base=(vertices, faces), scale=0.4, seed=2,
+                         field=(points, directions))
+check(np.array_equal(job.result["faces"], guided.faces) and np.allclose(job.result["vertices"], guided.vertices, atol=1e-5),
+      "the guided job is the module's with that field")
+check(not np.array_equal(guided.vertices, expected.vertices), "and another result than without it")
+check(bpy.ops.meshquilt.preview_field() == {"FINISHED"}, "Preview field finishes")
+preview = bpy.data.objects["Cube_field"].data
+centres, field_directions = meshquilt.guidance((vertices, faces), field=(points, directions))
+check(len(preview.edges) == len(centres) and len(preview.vertices) == 2 * len(centres), "one line per face")
+top = centres[:, 2] > 0.99
+# Held at the cube's nearest corners, so within about 18 degrees (the default field, along an axis,
+# is 45 degrees off).
+check(np.abs(field_directions[top] @ np.array([1.0, 1.0, 0.0]) / np.sqrt(2.0)).min() > 0.95,
+      "on the top the field runs along the guide")
+settings.guide_object = None
 
 manifest = tomllib.load(open(os.path.join(source, "blender", "meshquilt_blender", "blender_manifest.toml"), "rb"))
 check(manifest["type"] == "add-on" and manifest["id"] == "meshquilt", "the extension manifest parses")

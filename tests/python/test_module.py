@@ -2,6 +2,7 @@
 (read from the CLI's PLY by a parser written here), progress and cancel, errors as exceptions,
 numpy dtypes and shapes. Run by ctest with PYTHONPATH at build/python and MESHQUILT_CLI set."""
 import os
+import json
 import struct
 import subprocess
 import tempfile
@@ -102,6 +103,45 @@ def test_a_base_and_a_swatch_equal_the_command_line():
     assert np.array_equal(result.vertices, v)
     assert np.array_equal(result.faces, f)
     assert np.array_equal(result.element, element)
+
+
+def test_a_drawn_field_equals_the_command_lines_field_file():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    points = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]])
+    directions = np.array([[1.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]])
+    result = meshquilt.synth(base=base, scale=0.3, seed=2, backend="cpu", field=(points, directions))
+    with tempfile.TemporaryDirectory() as folder:
+        field_path = os.path.join(folder, "field.json")
+        with open(field_path, "w") as out:
+            json.dump({"directions": [{"point": p.tolist(), "direction": d.tolist()} for p, d in zip(points, directions)]},
+                      out)
+        v, f, element, _ = cli_synth("--base", os.path.join(SOURCE, "data", "sphere.off"), "--scale", "0.3", "--seed", "2",
+                                     "--field", field_path)
+    assert np.array_equal(result.vertices, v)
+    assert np.array_equal(result.faces, f)
+    assert result.stats["faces"] == len(f)
+    # Without the field the job is another one.
+    assert not np.array_equal(meshquilt.synth(base=base, scale=0.3, seed=2, backend="cpu").vertices, v)
+
+
+def test_guidance_holds_a_drawn_direction_and_is_tangent():
+    vertices, faces = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    top = int(np.argmax(vertices[:, 2]))
+    centres, directions = meshquilt.guidance((vertices, faces), field=([vertices[top]], [[1.0, 0.0, 0.0]]))
+    assert centres.shape == (len(faces), 3) and directions.shape == (len(faces), 3)
+    assert np.allclose(np.linalg.norm(directions, axis=1), 1.0)
+    # Tangent: across the sphere's faces the field is normal to the face.
+    a, b, c = (vertices[faces[:, k]] for k in range(3))
+    normals = np.cross(b - a, c - a)
+    normals /= np.linalg.norm(normals, axis=1)[:, None]
+    assert np.abs(np.sum(normals * directions, axis=1)).max() < 1e-6
+    # The faces round the top vertex run along x, as drawn there.
+    around = np.any(faces == top, axis=1)
+    assert np.abs(directions[around, 0]).min() > 0.9
+    with pytest.raises(meshquilt.Error, match="direction 0: the direction is zero"):
+        meshquilt.guidance((vertices, faces), field=([vertices[top]], [[0.0, 0.0, 0.0]]))
+    with pytest.raises(meshquilt.Error, match="a field needs base"):
+        meshquilt.synth(plane=(1, 1), field=([vertices[top]], [[1.0, 0.0, 0.0]]))
 
 
 def test_progress_rises_to_the_whole_and_cancel_stops_the_job():

@@ -466,5 +466,32 @@ TEST_F(FieldFile, WritesOneSegmentPerFaceAlongTheField) {
   }
 }
 
+TEST(GuidanceField, DirectionsAtPointsGoToTheNearestVertexAsAFieldFileDoes) {
+  const TriMesh mesh = test::icosphere(2);
+  const std::vector<Vec3> points{{0.1, 0.05, 0.99}, {-0.7, 0.7, 0.1}};
+  const std::vector<Vec3> directions{{1, 0, 0}, {0, 0, 2}};
+  const std::vector<FieldConstraint> at = constraints_at_points(points, directions, mesh, "field");
+  ASSERT_EQ(at.size(), 2u);
+  for (size_t k = 0; k < points.size(); ++k) {
+    // Brute force: the vertex nearest the point.
+    size_t nearest = 0;
+    for (size_t v = 1; v < mesh.num_vertices(); ++v)
+      if (glm::distance(mesh.positions[v], points[k]) < glm::distance(mesh.positions[nearest], points[k])) nearest = v;
+    EXPECT_EQ(at[k].vertex, static_cast<int32_t>(nearest));
+    EXPECT_EQ(at[k].direction, directions[k]);
+  }
+  // The same as a field file's point entries.
+  const std::vector<FieldConstraint> file = parse_field(
+      R"({"directions": [{"point": [0.1, 0.05, 0.99], "direction": [1, 0, 0]},
+                         {"point": [-0.7, 0.7, 0.1], "direction": [0, 0, 2]}]})",
+      "f.json", mesh);
+  EXPECT_EQ(file[0].vertex, at[0].vertex);
+  EXPECT_EQ(file[1].vertex, at[1].vertex);
+  EXPECT_THROW(constraints_at_points(points, {directions[0]}, mesh, "field"), InputError);
+  EXPECT_THROW(constraints_at_points({points[0]}, {Vec3(0.0)}, mesh, "field"), InputError);
+  EXPECT_THROW(constraints_at_points({Vec3(std::nan(""), 0, 0)}, {directions[0]}, mesh, "field"), InputError);
+  EXPECT_THROW(constraints_at_points({points[0]}, {directions[0]}, TriMesh{}, "field"), InputError);
+}
+
 }  // namespace
 }  // namespace meshquilt
