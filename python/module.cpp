@@ -17,12 +17,14 @@
 #include "core/error.h"
 #include "device.h"
 #include "edit/element_edit.h"
+#include "edit/swatch_animation.h"
 #include "inspect/inspect_report.h"
 #include "mesh/atomic_write.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
+#include "quilt/broken_elements.h"
 #include "quilt/planar_quilting.h"
 #include "render/png_encoding.h"
 #include "render/render_mesh.h"
@@ -150,6 +152,40 @@ class Kwargs {
   std::vector<std::string> used_;
 };
 
+VineOptions vine_options(bool small, uint64_t seed, const py::kwargs& kwargs) {
+  VineOptions o = small ? VineOptions::small() : VineOptions{};
+  o.seed = seed;
+  Kwargs<VineOptions>(kwargs, o, "vine")
+      .set("columns", &VineOptions::columns)
+      .set("rows", &VineOptions::rows)
+      .set("spacing", &VineOptions::spacing)
+      .set("height", &VineOptions::height)
+      .set("radius", &VineOptions::radius)
+      .set("curl", &VineOptions::curl)
+      .set("sway", &VineOptions::sway)
+      .set("segments", &VineOptions::segments)
+      .set("sides", &VineOptions::sides)
+      .done();
+  return o;
+}
+
+py::array_t<double> positions_array(const std::vector<Vec3>& positions) {
+  py::array_t<double> out({static_cast<py::ssize_t>(positions.size()), py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (size_t i = 0; i < positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) a(i, k) = positions[i][k];
+  return out;
+}
+
+std::vector<Vec3> positions_of(const Array3d& a, const char* what) {
+  if (a.ndim() != 2 || a.shape(1) != 3)
+    throw InputError(std::string("animate: ") + what + " must be an (N, 3) array", ErrorKind::invalid_option);
+  std::vector<Vec3> out;
+  const auto v = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < v.shape(0); ++i) out.emplace_back(v(i, 0), v(i, 1), v(i, 2));
+  return out;
+}
+
 TriMesh make_swatch(const std::string& kind, const std::string& preset, uint64_t seed,
                     const py::kwargs& kwargs) {
   const bool small = preset == "small";
@@ -198,22 +234,7 @@ TriMesh make_swatch(const std::string& kind, const std::string& preset, uint64_t
         .done();
     return make_fruit(o);
   }
-  if (kind == "vine") {
-    VineOptions o = small ? VineOptions::small() : VineOptions{};
-    o.seed = seed;
-    Kwargs<VineOptions>(kwargs, o, kind)
-        .set("columns", &VineOptions::columns)
-        .set("rows", &VineOptions::rows)
-        .set("spacing", &VineOptions::spacing)
-        .set("height", &VineOptions::height)
-        .set("radius", &VineOptions::radius)
-        .set("curl", &VineOptions::curl)
-        .set("sway", &VineOptions::sway)
-        .set("segments", &VineOptions::segments)
-        .set("sides", &VineOptions::sides)
-        .done();
-    return make_vine(o);
-  }
+  if (kind == "vine") return make_vine(vine_options(small, seed, kwargs));
   if (kind == "nuts") {
     NutOptions o = small ? NutOptions::small() : NutOptions{};
     o.seed = seed;
@@ -531,4 +552,71 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("vertices"), py::arg("faces"), py::arg("element"), py::arg("source") = py::none(),
       py::arg("remove_elements") = std::vector<int32_t>{}, py::arg("remove_sources") = std::vector<int32_t>{},
       py::arg("keep_sources") = std::vector<int32_t>{}, py::arg("age") = 0.0, py::arg("seed") = 1);
+
+  m.def(
+      "vine_frames",
+      [](int count, const std::string& preset, uint64_t seed, const py::kwargs& kwargs) {
+        if (preset != "small" && preset != "default")
+          throw InputError("--preset: expected default or small, got '" + preset + "'", ErrorKind::invalid_option);
+        if (count < 1 || count > 10000)
+          throw InputError("--frames: expected 1..10000, got " + std::to_string(count), ErrorKind::invalid_option);
+        py::list frames;
+        for (const TriMesh& frame : make_vine_frames(vine_options(preset == "small", seed, kwargs), count))
+          frames.append(positions_array(frame.positions));
+        return frames;
+      },
+      py::arg("count"), py::arg("preset") = "default", py::arg("seed") = 1);
+
+  m.def(
+      "animate",
+      [](const Array3d& vertices, const Array3i& faces, const py::array_t<int32_t>& element,
+         const py::array_t<int32_t>& origin, const Array3d& swatch_rest, const std::vector<Array3d>& swatch_frames,
+         bool keep_all) {
+        TriMesh quilt = mesh_from(vertices, faces, "animate");
+        quilt.elements.assign(element.data(), element.data() + element.size());
+        quilt.origins.assign(origin.data(), origin.data() + origin.size());
+        if (quilt.elements.size() != quilt.num_faces() || quilt.origins.size() != quilt.num_vertices())
+          throw InputError("animate: element needs one entry per face and origin one per vertex",
+                           ErrorKind::invalid_option);
+        const std::vector<Vec3> rest = positions_of(swatch_rest, "swatch_rest");
+        std::vector<std::vector<Vec3>> frames;
+        for (const Array3d& frame : swatch_frames) {
+          frames.push_back(positions_of(frame, "a swatch frame"));
+          if (frames.back().size() != rest.size())
+            throw InputError("animate: a swatch frame has " + std::to_string(frames.back().size()) +
+                                 " vertices, the swatch " + std::to_string(rest.size()),
+                             ErrorKind::invalid_option);
+        }
+        std::vector<std::vector<Vec3>> moved;
+        std::vector<int32_t> dropped;
+        {
+          py::gil_scoped_release release;
+          const std::vector<glm::dmat3> local = vertex_frames(quilt, rest);
+          for (const std::vector<Vec3>& frame : frames) moved.push_back(animated_positions(quilt, local, rest, frame));
+          // As `meshquilt animate`: elements that meet another or themselves in some frame go.
+          std::vector<int32_t> ids(quilt.elements.begin(), quilt.elements.end());
+          std::sort(ids.begin(), ids.end());
+          ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+          std::vector<uint8_t> alive(ids.size(), 1);
+          if (!keep_all)
+            for (const std::vector<Vec3>& positions : moved) {
+              TriMesh at = quilt;
+              at.positions = positions;
+              const std::vector<TriMesh> parts = split_elements(at);
+              std::vector<const TriMesh*> pointers;
+              for (const TriMesh& part : parts) pointers.push_back(&part);
+              remove_broken_elements(pointers, false, true, alive);
+            }
+          for (size_t i = 0; i < ids.size(); ++i)
+            if (!alive[i]) dropped.push_back(ids[i]);
+        }
+        py::list positions;
+        for (const std::vector<Vec3>& frame : moved) positions.append(positions_array(frame));
+        py::dict out;
+        out["frames"] = positions;
+        out["dropped"] = dropped;
+        return out;
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("element"), py::arg("origin"), py::arg("swatch_rest"),
+      py::arg("swatch_frames"), py::arg("keep_all") = false);
 }

@@ -14,6 +14,7 @@ bl_info = {
 
 import base64
 
+import bmesh
 import bpy
 import numpy as np
 from mathutils import Vector
@@ -50,6 +51,8 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
     shell_height: bpy.props.FloatProperty(name="Shell height", default=0.0, min=0.0,
                                           description="Layer height in base units (0: the swatch's own)")
     select_share: bpy.props.FloatProperty(name="Share", default=0.1, min=0.0, max=1.0)
+    frames: bpy.props.IntProperty(name="Frames", default=12, min=1, max=1000,
+                                  description="Frames of the built-in vine's sway cycle")
     guide_object: bpy.props.PointerProperty(
         name="Guide", type=bpy.types.Object, poll=lambda self, obj: obj.type in {"CURVE", "GPENCIL"},
         description="A curve or grease-pencil object whose strokes, drawn over the base, orient the "
@@ -150,6 +153,10 @@ def add_result_object(context, base, result):
         if result.get(name) is not None:
             attribute = mesh.attributes.new(name, "INT", "FACE")
             attribute.data.foreach_set("value", np.asarray(result[name], dtype=np.int32))
+    if result.get("origin") is not None:
+        # The swatch vertex each vertex came from, for playing a swatch animation on it.
+        attribute = mesh.attributes.new("origin", "INT", "POINT")
+        attribute.data.foreach_set("value", np.asarray(result["origin"], dtype=np.int32))
     if result.get("source") is not None:
         sources = np.unique(result["source"])
         for k, s in enumerate(sources):
@@ -302,6 +309,95 @@ class MESHQUILT_OT_follow_base(bpy.types.Operator):
         return {"FINISHED"}
 
 
+def swatch_animation(context, module):
+    """(rest, frames) of the swatch animation to play: the swatch object's shape keys (rest: its
+    basis), or the built-in vine's sway cycle; None when the swatch has none."""
+    s = settings_of(context)
+    if s.swatch_object:
+        keys = s.swatch_object.data.shape_keys
+        if keys is None or len(keys.key_blocks) < 2:
+            return None
+        matrix = np.array(s.swatch_object.matrix_world)
+
+        def world(block):
+            co = np.empty(3 * len(block.data))
+            block.data.foreach_get("co", co)
+            return co.reshape(-1, 3) @ matrix[:3, :3].T + matrix[:3, 3]
+
+        return world(keys.reference_key), [world(b) for b in keys.key_blocks if b != keys.reference_key]
+    if s.swatch_kind != "vine":
+        return None
+    options = {"preset": "small"} if s.small else {}
+    return (module.swatch("vine", **options).vertices, module.vine_frames(s.frames, **options))
+
+
+class MESHQUILT_OT_animate(bpy.types.Operator):
+    """Play the swatch's animation on the quilted object as shape keys, one a frame, keyed to play
+    in turn: the swatch object's shape keys, or the built-in vine's sway. Elements that would meet
+    in some frame are removed first"""
+    bl_idname = "meshquilt.animate"
+    bl_label = "Animate"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return (obj is not None and obj.type == "MESH" and "origin" in obj.data.attributes
+                and "element" in obj.data.attributes and obj.data.shape_keys is None)
+
+    def execute(self, context):
+        obj = context.active_object
+        prefs = preferences(context)
+        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        if module is None:
+            self.report({"ERROR"}, "meshquilt: animating needs the Python module (see the preferences)")
+            return {"CANCELLED"}
+        animation = swatch_animation(context, module)
+        if animation is None:
+            self.report({"ERROR"}, "meshquilt: the swatch has no animation (shape keys, or the built-in vine)")
+            return {"CANCELLED"}
+        mesh = obj.data
+        vertices = np.empty(3 * len(mesh.vertices))
+        mesh.vertices.foreach_get("co", vertices)
+        faces = np.empty(3 * len(mesh.polygons), dtype=np.int32)
+        mesh.polygons.foreach_get("vertices", faces)
+        element = np.empty(len(mesh.polygons), dtype=np.int32)
+        mesh.attributes["element"].data.foreach_get("value", element)
+        origin = np.empty(len(mesh.vertices), dtype=np.int32)
+        mesh.attributes["origin"].data.foreach_get("value", origin)
+        result = module.Mesh(vertices.reshape(-1, 3), faces.reshape(-1, 3), element=element, origin=origin)
+        try:
+            frames, dropped = module.animate(result, *animation)
+        except module.Error as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        kept = np.ones(len(mesh.vertices), dtype=bool)
+        if len(dropped):
+            bm = bmesh.new()
+            bm.from_mesh(mesh)
+            layer = bm.faces.layers.int["element"]
+            gone = [f for f in bm.faces if f[layer] in set(dropped.tolist())]
+            used = np.zeros(len(mesh.vertices), dtype=bool)
+            used[faces.reshape(-1, 3)[~np.isin(element, dropped)].ravel()] = True
+            kept = used
+            bmesh.ops.delete(bm, geom=gone, context="FACES_ONLY")
+            bmesh.ops.delete(bm, geom=[v for v in bm.verts if not v.link_faces], context="VERTS")
+            bm.to_mesh(mesh)
+            bm.free()
+        obj.shape_key_add(name="Basis", from_mix=False)
+        for k, positions in enumerate(frames):
+            key = obj.shape_key_add(name="frame_%d" % k, from_mix=False)
+            key.data.foreach_set("co", np.asarray(positions)[kept].ravel())
+            # Full at its own scene frame (from 1), off at its neighbours: the keys play in turn.
+            for frame, value in ((k, 0.0), (k + 1, 1.0), (k + 2, 0.0)):
+                key.value = value
+                key.keyframe_insert("value", frame=frame)
+        context.scene.frame_start, context.scene.frame_end = 1, len(frames)
+        self.report({"INFO"}, "meshquilt: %d frames as shape keys; %d elements removed for meeting in some frame"
+                    % (len(frames), len(dropped)))
+        return {"FINISHED"}
+
+
 class MESHQUILT_OT_preview_field(bpy.types.Operator):
     """Show the guidance field over the active mesh as short lines, one per face (the guide's
     strokes spread over the surface, or the default field): an object beside the base, replaced
@@ -366,13 +462,17 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
         row.operator(MESHQUILT_OT_preview_field.bl_idname, text="", icon="ORIENTATION_NORMAL")
         layout.operator(MESHQUILT_OT_create.bl_idname)
         layout.operator(MESHQUILT_OT_follow_base.bl_idname)
+        row = layout.row(align=True)
+        row.operator(MESHQUILT_OT_animate.bl_idname)
+        if not s.swatch_object and s.swatch_kind == "vine":
+            row.prop(s, "frames")
         box = layout.box()
         box.prop(s, "select_share")
         box.operator(MESHQUILT_OT_select.bl_idname).mode = "RANDOM"
 
 
 classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
-           MESHQUILT_OT_preview_field, VIEW3D_PT_meshquilt)
+           MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, VIEW3D_PT_meshquilt)
 
 
 def register():

@@ -116,7 +116,7 @@ class QuiltJob:
                     minimize_distortion=self.minimize_distortion, shell_height=self.shell_height,
                     keep_texture=True, progress=self._progress, cancel=self._token, field=self.field)
         return {"vertices": r.vertices, "faces": r.faces, "element": r.element, "source": r.source,
-                "texture": r.texture}
+                "origin": r.origin, "texture": r.texture}
 
     def _run_executable(self):
         with tempfile.TemporaryDirectory() as folder:

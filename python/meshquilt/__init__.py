@@ -12,15 +12,15 @@ Errors raise meshquilt.Error with the command line's one-line message; a CancelT
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "inspect", "render", "edit",
-           "read", "write", "embed"]
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "vine_frames", "animate",
+           "inspect", "render", "edit", "read", "write", "embed"]
 
 
 @dataclass
@@ -118,6 +118,29 @@ def guidance(base: MeshLike, field: Optional[Field] = None) -> Tuple[np.ndarray,
     bv, bf = _arrays(base, "base")
     fp, fd = _field_arrays(field)
     return _meshquilt.guidance(bv, bf, fp, fd)
+
+
+def vine_frames(count: int, preset: str = "default", seed: int = 1, **options: Any) -> List[np.ndarray]:
+    """`count` frames of one sway cycle of `swatch("vine", preset, seed, **options)`: its vertex
+    positions per frame, (S, 3) arrays, as `meshquilt swatch vine --frames` writes them."""
+    return list(_meshquilt.vine_frames(count, preset, seed, **options))
+
+
+def animate(result: Mesh, swatch_rest: Any, swatch_frames: Sequence[Any],
+            keep_all: bool = False) -> Tuple[List[np.ndarray], np.ndarray]:
+    """Plays a swatch animation on a result, as `meshquilt animate` does: each vertex moves by its
+    swatch vertex's displacement (from `swatch_rest`, the swatch as synth used it, to each frame)
+    turned into its own local frame. `result` needs `element` and `origin` (every synth result
+    has them). Returns (positions per frame, (V, 3) arrays; the element ids that meet another or
+    themselves in some frame, left out by the command; none with keep_all)."""
+    if result.element is None or result.origin is None:
+        raise TypeError("animate: the result needs per-face element ids and per-vertex origins")
+    vertices, faces = _arrays(result, "animate")
+    rest = np.ascontiguousarray(swatch_rest, dtype=np.float64).reshape(-1, 3)
+    frames = [np.ascontiguousarray(f, dtype=np.float64).reshape(-1, 3) for f in swatch_frames]
+    d = _meshquilt.animate(vertices, faces, np.ascontiguousarray(result.element, np.int32),
+                           np.ascontiguousarray(result.origin, np.int32), rest, frames, keep_all)
+    return list(d["frames"]), np.asarray(d["dropped"], dtype=np.int32)
 
 
 def inspect(mesh: MeshLike) -> Dict[str, Any]:

@@ -3,7 +3,8 @@
 It enables the add-on, quilts the default cube with the small chain mail through the job object
 and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
 and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows a guide
-curve drawn over the base and previews its field, and parses the extension manifest."""
+curve drawn over the base and previews its field, plays the built-in vine's sway as shape keys,
+and parses the extension manifest."""
 import os
 import sys
 import tomllib
@@ -134,6 +135,42 @@ top = centres[:, 2] > 0.99
 check(np.abs(field_directions[top] @ np.array([1.0, 1.0, 0.0]) / np.sqrt(2.0)).min() > 0.95,
       "on the top the field runs along the guide")
 settings.guide_object = None
+
+# The built-in vine quilted over the cube plays its sway as shape keys, keyed in turn.
+settings.swatch_kind, settings.frames, settings.scale = "vine", 4, 0.4
+bpy.context.view_layer.objects.active = cube
+before = set(bpy.data.objects.keys())
+check(bpy.ops.meshquilt.create() == {"FINISHED"}, "Create quilts the cube with the vine")
+vine_obj = bpy.data.objects[(set(bpy.data.objects.keys()) - before).pop()]
+check("origin" in vine_obj.data.attributes, "the result keeps each vertex's swatch vertex")
+
+def stored(mesh):
+    """The object's mesh as the operator reads it: single-precision positions, its own faces."""
+    co = np.empty(3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    tris = np.empty(3 * len(mesh.polygons), dtype=np.int32)
+    mesh.polygons.foreach_get("vertices", tris)
+    ids = {name: np.empty(len(mesh.attributes[name].data), dtype=np.int32) for name in ("element", "origin")}
+    for name, values in ids.items():
+        mesh.attributes[name].data.foreach_get("value", values)
+    return meshquilt.Mesh(co.reshape(-1, 3), tris.reshape(-1, 3), element=ids["element"], origin=ids["origin"])
+
+
+as_stored = stored(vine_obj.data)
+bpy.context.view_layer.objects.active = vine_obj
+check(bpy.ops.meshquilt.animate() == {"FINISHED"}, "Animate finishes")
+frames, dropped = meshquilt.animate(as_stored, meshquilt.swatch("vine", preset="small").vertices,
+                                    meshquilt.vine_frames(4, preset="small"))
+used = np.unique(as_stored.faces[~np.isin(as_stored.element, dropped)])
+keys = vine_obj.data.shape_keys.key_blocks
+check(len(keys) == 5 and len(vine_obj.data.vertices) == len(used),
+      "a basis and 4 frames; %d elements that meet in some frame removed" % len(dropped))
+for k in range(4):
+    co = np.empty(3 * len(keys[k + 1].data))
+    keys[k + 1].data.foreach_get("co", co)
+    check(np.allclose(co.reshape(-1, 3), frames[k][used], atol=1e-6), "frame %d is the module's" % k)
+bpy.context.scene.frame_set(3)
+check(abs(keys["frame_2"].value - 1.0) < 1e-6 and abs(keys["frame_1"].value) < 1e-6, "scene frame 3 plays frame 2")
 
 manifest = tomllib.load(open(os.path.join(source, "blender", "meshquilt_blender", "blender_manifest.toml"), "rb"))
 check(manifest["type"] == "add-on" and manifest["id"] == "meshquilt", "the extension manifest parses")

@@ -144,6 +144,41 @@ def test_guidance_holds_a_drawn_direction_and_is_tangent():
         meshquilt.synth(plane=(1, 1), field=([vertices[top]], [[1.0, 0.0, 0.0]]))
 
 
+def test_animate_equals_the_command_line_frame_for_frame():
+    vine = meshquilt.swatch("vine", preset="small")
+    frames = meshquilt.vine_frames(3, preset="small")
+    result = meshquilt.synth(vine, plane=(1, 1), seed=1, backend="cpu")
+    positions, dropped = meshquilt.animate(result, vine.vertices, frames)
+    assert len(positions) == 3 and all(p.shape == result.vertices.shape for p in positions)
+    kept_faces = ~np.isin(result.element, dropped)
+    used = np.unique(result.faces[kept_faces])
+    with tempfile.TemporaryDirectory() as folder:
+        subprocess.run([CLI, "swatch", "vine", "--preset", "small", "--frames", "3", "-o",
+                        os.path.join(folder, "vine.ply")], check=True, capture_output=True)
+        # The command's swatch frames are the module's.
+        for k, frame in enumerate(sorted(os.listdir(os.path.join(folder, "vine_frames")))):
+            names, rows = read_ply(os.path.join(folder, "vine_frames", frame))["vertex"]
+            assert np.array_equal(np.array([r[:3] for r in rows]), frames[k])
+        v, f, _, _ = cli_synth("--swatch", os.path.join(folder, "vine.ply"), "--plane", "1x1", "--seed", "1",
+                               "--provenance")
+        assert np.array_equal(v, result.vertices)
+        quilt = os.path.join(folder, "quilt.ply")
+        subprocess.run([CLI, "synth", "--progress", "none", "--backend", "cpu", "--swatch",
+                        os.path.join(folder, "vine.ply"), "--plane", "1x1", "--seed", "1", "--provenance", "-o", quilt],
+                       check=True, capture_output=True)
+        subprocess.run([CLI, "animate", "--quilt", quilt, "--swatch-frames", os.path.join(folder, "vine_frames"),
+                        "--swatch", os.path.join(folder, "vine.ply"), "-o", os.path.join(folder, "out")],
+                       check=True, capture_output=True)
+        for k in range(3):
+            names, rows = read_ply(os.path.join(folder, "out", "frame_%04d.ply" % k))["vertex"]
+            assert np.array_equal(np.array([r[:3] for r in rows]), positions[k][used])
+    # A still swatch moves nothing.
+    still, _ = meshquilt.animate(result, vine.vertices, [vine.vertices], keep_all=True)
+    assert np.array_equal(still[0], result.vertices)
+    with pytest.raises(meshquilt.Error, match="a swatch frame has 3 vertices"):
+        meshquilt.animate(result, vine.vertices, [vine.vertices[:3]])
+
+
 def test_progress_rises_to_the_whole_and_cancel_stops_the_job():
     shares = []
     meshquilt.synth(plane=(2, 2), backend="cpu", progress=lambda share, left: shares.append((share, left)))
