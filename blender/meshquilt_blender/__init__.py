@@ -398,6 +398,48 @@ class MESHQUILT_OT_animate(bpy.types.Operator):
         return {"FINISHED"}
 
 
+SAMPLES = [("MAIL_SPHERE", "Chain mail sphere", "A UV sphere in the small chain mail"),
+           ("WEAVE_TORUS", "Woven torus", "A torus in a plain weave along a guide circle round its hole"),
+           ("VINE_PLANE", "Swaying vine", "A subdivided plane under the vine; Create, then Animate")]
+
+
+def add_sample_scene(context, sample):
+    """Adds the sample's base (and guide) at the 3D cursor's scene, sets the panel, and makes the
+    base active: ready for Create."""
+    s = settings_of(context)
+    s.swatch_object, s.guide_object, s.small, s.seed = None, None, True, 1
+    if sample == "MAIL_SPHERE":
+        bpy.ops.mesh.primitive_uv_sphere_add(segments=48, ring_count=24, radius=1.0)
+        s.swatch_kind, s.scale = "chainmail", 0.25
+    elif sample == "WEAVE_TORUS":
+        bpy.ops.mesh.primitive_torus_add(major_segments=64, minor_segments=24, major_radius=1.0, minor_radius=0.4)
+        base = context.active_object
+        bpy.ops.curve.primitive_bezier_circle_add(radius=1.4)
+        s.guide_object = context.active_object
+        s.guide_object.name = "meshquilt_guide"
+        context.view_layer.objects.active = base
+        base.select_set(True)
+        s.swatch_kind, s.scale = "weave", 0.2
+    else:
+        bpy.ops.mesh.primitive_grid_add(x_subdivisions=16, y_subdivisions=16, size=2.0)
+        s.swatch_kind, s.scale, s.frames = "vine", 0.35, 12
+    return context.active_object
+
+
+class MESHQUILT_OT_sample_scene(bpy.types.Operator):
+    """Add a sample to start from: a base (and a guide) with the panel's settings for it"""
+    bl_idname = "meshquilt.sample_scene"
+    bl_label = "Sample scene"
+    bl_options = {"REGISTER", "UNDO"}
+
+    sample: bpy.props.EnumProperty(name="Sample", items=SAMPLES)
+
+    def execute(self, context):
+        base = add_sample_scene(context, self.sample)
+        self.report({"INFO"}, "meshquilt: %s ready; press Create" % base.name)
+        return {"FINISHED"}
+
+
 class MESHQUILT_OT_preview_field(bpy.types.Operator):
     """Show the guidance field over the active mesh as short lines, one per face (the guide's
     strokes spread over the surface, or the default field): an object beside the base, replaced
@@ -448,6 +490,7 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
 
     def draw(self, context):
         s, layout = settings_of(context), self.layout
+        layout.operator_menu_enum(MESHQUILT_OT_sample_scene.bl_idname, "sample", text="Sample scene")
         layout.label(text="Base: " + (context.active_object.name if context.active_object else "none"))
         layout.prop(s, "swatch_object")
         if not s.swatch_object:
@@ -472,7 +515,7 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
 
 
 classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
-           MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, VIEW3D_PT_meshquilt)
+           MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, MESHQUILT_OT_sample_scene, VIEW3D_PT_meshquilt)
 
 
 def register():

@@ -4,7 +4,7 @@ It enables the add-on, quilts the default cube with the small chain mail through
 and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
 and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows a guide
 curve drawn over the base and previews its field, plays the built-in vine's sway as shape keys,
-and parses the extension manifest."""
+adds each sample scene and weaves the sample torus along its guide, and parses the extension manifest."""
 import os
 import sys
 import tomllib
@@ -171,6 +171,25 @@ for k in range(4):
     check(np.allclose(co.reshape(-1, 3), frames[k][used], atol=1e-6), "frame %d is the module's" % k)
 bpy.context.scene.frame_set(3)
 check(abs(keys["frame_2"].value - 1.0) < 1e-6 and abs(keys["frame_1"].value) < 1e-6, "scene frame 3 plays frame 2")
+
+# Each sample scene adds its base, ready for Create; the woven torus with its guide circle.
+for sample, kind in (("MAIL_SPHERE", "chainmail"), ("WEAVE_TORUS", "weave"), ("VINE_PLANE", "vine")):
+    before = set(bpy.data.objects.keys())
+    check(bpy.ops.meshquilt.sample_scene(sample=sample) == {"FINISHED"}, "sample %s is added" % sample)
+    added = set(bpy.data.objects.keys()) - before
+    base = bpy.context.active_object
+    check(base.name in added and base.type == "MESH" and settings.swatch_kind == kind
+          and bpy.ops.meshquilt.create.poll(), "its base is active and the panel set for %s" % kind)
+check(settings.guide_object is None, "only the torus has a guide")
+bpy.ops.meshquilt.sample_scene(sample="WEAVE_TORUS")
+torus = bpy.context.active_object
+points, directions = meshquilt_blender.guide_field(settings.guide_object, torus)
+radial = points[:, :2] / np.linalg.norm(points[:, :2], axis=1)[:, None]
+check(np.abs(np.sum(radial * directions[:, :2], axis=1) / np.linalg.norm(directions, axis=1)).max() < 0.2,
+      "the torus's guide runs round its hole")
+settings.small, settings.scale = True, 0.45
+check(bpy.ops.meshquilt.create() == {"FINISHED"}, "Create weaves the torus along its guide")
+settings.guide_object = None
 
 manifest = tomllib.load(open(os.path.join(source, "blender", "meshquilt_blender", "blender_manifest.toml"), "rb"))
 check(manifest["type"] == "add-on" and manifest["id"] == "meshquilt", "the extension manifest parses")
