@@ -482,6 +482,54 @@ class MESHQUILT_OT_preview_field(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class MESHQUILT_OT_follow_frames(bpy.types.Operator):
+    """Follow an animated base over the scene's frame range: the layer placed over the base as it
+    is at each frame (its evaluated mesh: armature, shape keys, modifiers that keep its vertices),
+    one shape key a frame, keyed to play in turn"""
+    bl_idname = "meshquilt.follow_frames"
+    bl_label = "Follow the base's animation"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return MESHQUILT_OT_follow_base.poll(context) and context.active_object.data.shape_keys is None
+
+    def execute(self, context):
+        obj = context.active_object
+        prefs = preferences(context)
+        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        if module is None:
+            self.report({"ERROR"}, "meshquilt: following the base needs the Python module (see the preferences)")
+            return {"CANCELLED"}
+        base = bpy.data.objects[obj["meshquilt_base"]]
+        texture = base64.b64decode(obj["meshquilt_texture"])
+        scene = context.scene
+        current = scene.frame_current
+        world_to_local = np.array(obj.matrix_world.inverted())
+        frames = []
+        try:
+            for frame in range(scene.frame_start, scene.frame_end + 1):
+                scene.frame_set(frame)
+                placed = module.embed(texture, mesh_arrays(base, context.evaluated_depsgraph_get()))
+                if len(placed.vertices) != len(obj.data.vertices):
+                    raise module.Error("meshquilt: the result was edited; it can no longer follow its base")
+                frames.append((frame, placed.vertices @ world_to_local[:3, :3].T + world_to_local[:3, 3]))
+        except module.Error as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        finally:
+            scene.frame_set(current)
+        obj.shape_key_add(name="Basis", from_mix=False)
+        for frame, local in frames:
+            key = obj.shape_key_add(name="frame_%d" % frame, from_mix=False)
+            key.data.foreach_set("co", local.ravel())
+            for at, value in ((frame - 1, 0.0), (frame, 1.0), (frame + 1, 0.0)):
+                key.value = value
+                key.keyframe_insert("value", frame=at)
+        self.report({"INFO"}, "meshquilt: the layer follows the base over %d frames" % len(frames))
+        return {"FINISHED"}
+
+
 class VIEW3D_PT_meshquilt(bpy.types.Panel):
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
@@ -505,6 +553,7 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
         row.operator(MESHQUILT_OT_preview_field.bl_idname, text="", icon="ORIENTATION_NORMAL")
         layout.operator(MESHQUILT_OT_create.bl_idname)
         layout.operator(MESHQUILT_OT_follow_base.bl_idname)
+        layout.operator(MESHQUILT_OT_follow_frames.bl_idname)
         row = layout.row(align=True)
         row.operator(MESHQUILT_OT_animate.bl_idname)
         if not s.swatch_object and s.swatch_kind == "vine":
@@ -515,7 +564,8 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
 
 
 classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
-           MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, MESHQUILT_OT_sample_scene, VIEW3D_PT_meshquilt)
+           MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, MESHQUILT_OT_sample_scene,
+           MESHQUILT_OT_follow_frames, VIEW3D_PT_meshquilt)
 
 
 def register():

@@ -2,7 +2,7 @@
     blender -b --factory-startup --python-exit-code 1 --python test_addon.py -- MODULE_FOLDER SOURCE MESHQUILT
 It enables the add-on, quilts the default cube with the small chain mail through the job object
 and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
-and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows a guide
+and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows the cube's shape-key animation as shape keys, follows a guide
 curve drawn over the base and previews its field, plays the built-in vine's sway as shape keys,
 adds each sample scene and weaves the sample torus along its guide, and parses the extension manifest."""
 import os
@@ -98,10 +98,37 @@ stretched = meshquilt.embed(job_texture, meshquilt_blender.mesh_arrays(cube))
 check(np.allclose(moved.reshape(-1, 3), stretched.vertices, atol=1e-5), "the layer follows the stretched cube")
 check(not np.allclose(moved.reshape(-1, 3), expected.vertices, atol=1e-3), "and has moved with it")
 
+# The cube animated by a shape key (stretched along x from frame 1 to 3): the layer follows it as
+# shape keys, each frame the module's embed over the cube as it is then.
+stretch_key = cube.shape_key_add(name="Basis"), cube.shape_key_add(name="stretch")
+for v in stretch_key[1].data:
+    v.co.x *= 1.3
+for frame, value in ((1, 0.0), (3, 1.0)):
+    stretch_key[1].value = value
+    stretch_key[1].keyframe_insert("value", frame=frame)
+bpy.context.scene.frame_start, bpy.context.scene.frame_end = 1, 3
+bpy.context.scene.frame_set(1)
+quilt_obj.data.vertices.foreach_set("co", expected.vertices.ravel())
+bpy.context.view_layer.objects.active = quilt_obj
+check(bpy.ops.meshquilt.follow_frames() == {"FINISHED"}, "Follow the base's animation finishes")
+keys = quilt_obj.data.shape_keys.key_blocks
+check([k.name for k in keys] == ["Basis", "frame_1", "frame_2", "frame_3"], "one shape key a frame")
+for frame in (1, 2, 3):
+    bpy.context.scene.frame_set(frame)
+    at_frame = meshquilt.embed(job_texture, meshquilt_blender.mesh_arrays(cube, bpy.context.evaluated_depsgraph_get()))
+    co = np.empty(3 * len(keys[frame].data))
+    keys[frame].data.foreach_get("co", co)
+    check(np.allclose(co.reshape(-1, 3), at_frame.vertices, atol=1e-5), "frame %d is embed over the cube then" % frame)
+check(abs(keys["frame_3"].value - 1.0) < 1e-6 and abs(keys["frame_2"].value) < 1e-6, "scene frame 3 plays its key")
+bpy.context.scene.frame_set(1)
+bpy.context.view_layer.objects.active = cube
+bpy.ops.object.shape_key_remove(all=True)
+
 # A guide curve drawn across the cube's top, diagonally: its strokes land on the surface and
 # orient the swatch; the job's result is the module's with that field, and the preview draws it.
 for v in cube.data.vertices:
     v.co.x /= 1.3
+bpy.context.view_layer.objects.active = cube
 curve_data = bpy.data.curves.new("guide", type="CURVE")
 spline = curve_data.splines.new("POLY")
 spline.points.add(3)
