@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 blender -b --factory-startup --python-expr "import bpy; bpy.ops.wm.save_as_mainfile(filepath='$work/start.blend')" >/dev/null
-xvfb-run -a -s "-screen 0 1280x800x24" blender --factory-startup "$work/start.blend" \
+xvfb-run -a -s "-screen 0 1280x1280x24" blender --factory-startup "$work/start.blend" \
   --python blender/examples/panel_screenshot.py -- "$PWD/build/python" "$PWD" docs/images/blender_panel.png >/dev/null
 blender -b --factory-startup --python blender/examples/render_quilted_sphere.py -- \
   "$PWD/build/python" "$PWD" docs/images/blender_sphere.png >/dev/null

@@ -1,7 +1,7 @@
 """Runs the add-on's Create in Blender's window (under Xvfb), the modal way an artist does, and
 takes a screenshot of the panel and the result (the picture in docs/blender.md):
     blender -b --factory-startup --python-expr "import bpy; bpy.ops.wm.save_as_mainfile(filepath='start.blend')"
-    xvfb-run -s "-screen 0 1280x800x24" blender --factory-startup start.blend --python panel_screenshot.py -- \
+    xvfb-run -s "-screen 0 1280x1280x24" blender --factory-startup start.blend --python panel_screenshot.py -- \
         MODULE_FOLDER SOURCE OUT.png
 (a file named on the command line keeps the first-run splash screen away)."""
 import os
