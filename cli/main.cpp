@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   meshquilt::cli::add_embed_command(app);
   meshquilt::cli::add_edit_command(app);
   meshquilt::cli::add_animate_command(app);
+  meshquilt::cli::add_paint_command(app);
   meshquilt::cli::add_batch_command(app);
   try {
     app.parse(argc, argv);

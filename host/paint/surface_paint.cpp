@@ -1,0 +1,175 @@
+#include "paint/surface_paint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "mesh/measures.h"
+#include "paint/sweep_order.h"
+#include "surface/base_layout.h"
+#include "surface/surface_types.h"
+
+namespace meshquilt {
+namespace {
+
+void check(const TriMesh& base, const ColourImage& sample, const PaintOptions& o) {
+  if (base.num_faces() == 0) throw InputError("paint: the base has no faces", ErrorKind::invalid_mesh);
+  if (sample.width < 1 || sample.height < 1 || sample.rgb.size() != static_cast<size_t>(sample.width) * sample.height)
+    throw InputError("paint: the sample image is empty", ErrorKind::invalid_option);
+  if (!(o.pixels_per_unit > 0.0) || !std::isfinite(o.pixels_per_unit))
+    throw InputError("{pixels_per_unit}: expected a positive number", ErrorKind::invalid_option);
+  if (o.window < 3 || o.window > 21 || o.window % 2 == 0)
+    throw InputError("{window}: expected an odd number of pixels in 3..21, got " + std::to_string(o.window),
+                     ErrorKind::invalid_option);
+  if (o.random_candidates < 0 || o.random_candidates > 64)
+    throw InputError("{random_candidates}: expected 0..64", ErrorKind::invalid_option);
+  if (o.passes < 1 || o.passes > 8) throw InputError("{passes}: expected 1..8", ErrorKind::invalid_option);
+}
+
+// Splits until the mean edge is at most one sample pixel.
+int refinement_levels(const TriMesh& base, const PaintOptions& o) {
+  const double pixels = mean_edge_length(base) * o.pixels_per_unit;
+  const int levels = pixels > 1.0 ? static_cast<int>(std::ceil(std::log2(pixels))) : 0;
+  const double vertices = static_cast<double>(base.num_faces()) * std::pow(4.0, levels) / 2.0;
+  if (levels > 12 || vertices > static_cast<double>(o.max_vertices))
+    throw InputError("{pixels_per_unit}: " + std::to_string(o.pixels_per_unit) + " sample pixels per base unit needs about " +
+                         std::to_string(static_cast<long long>(vertices)) + " vertices (at most " +
+                         std::to_string(o.max_vertices) + "): use fewer pixels per unit",
+                     ErrorKind::invalid_option);
+  return levels;
+}
+
+// A neighbour of the vertex being coloured: where it lies in the vertex's frame, in pixels.
+struct Neighbour {
+  int32_t vertex;
+  glm::dvec2 offset;
+  double weight;
+};
+
+class Painter {
+ public:
+  Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const ColourImage& sample,
+          const PaintOptions& options)
+      : surface_(surface), directions_(directions), sample_(sample), options_(options), rng_(options.seed) {
+    const size_t n = surface.mesh.num_vertices();
+    colour_.assign(n, glm::dvec3(0.0));
+    source_.assign(n, glm::dvec2(0.0));
+    done_.assign(n, 0);
+    seen_.assign(n, 0);
+    radius_ = 0.5 * options.window / options.pixels_per_unit;
+    sigma2_ = std::pow(0.25 * options.window, 2.0);
+  }
+
+  // One visit: the best candidate for v given the neighbours coloured so far (or all of them).
+  double visit(int32_t v, bool whole) {
+    gather(v, whole);
+    std::vector<glm::dvec2> candidates;
+    for (const Neighbour& u : neighbours_) candidates.push_back(source_[u.vertex] - u.offset);
+    if (done_[v]) candidates.push_back(source_[v]);
+    std::uniform_real_distribution<double> x(0.0, sample_.width), y(0.0, sample_.height);
+    const int random = candidates.empty() ? 1 : options_.random_candidates;
+    for (int k = 0; k < random; ++k) candidates.emplace_back(x(rng_), y(rng_));
+    double best = std::numeric_limits<double>::infinity();
+    glm::dvec2 chosen = candidates.front();
+    for (const glm::dvec2& c : candidates) {
+      double cost = 0.0;
+      for (const Neighbour& u : neighbours_) {
+        const glm::dvec3 d = colour_[u.vertex] - sample_.sample(c + u.offset);
+        cost += u.weight * glm::dot(d, d);
+        if (cost >= best) break;
+      }
+      if (cost < best) {
+        best = cost;
+        chosen = c;
+      }
+    }
+    source_[v] = wrap(chosen);
+    colour_[v] = sample_.sample(source_[v]);
+    done_[v] = 1;
+    double weights = 0.0;
+    for (const Neighbour& u : neighbours_) weights += u.weight;
+    return weights > 0.0 ? best / weights : 0.0;
+  }
+
+  const std::vector<glm::dvec3>& colours() const { return colour_; }
+  const std::vector<glm::dvec2>& sources() const { return source_; }
+
+ private:
+  glm::dvec2 wrap(const glm::dvec2& p) const {
+    return {p.x - sample_.width * std::floor(p.x / sample_.width), p.y - sample_.height * std::floor(p.y / sample_.height)};
+  }
+
+  // The vertices within the window's radius of v (through edges, by distance in space), coloured
+  // ones only unless `whole`, in v's frame: x along the field, y along normal x field.
+  void gather(int32_t v, bool whole) {
+    neighbours_.clear();
+    const Vec3& p = surface_.mesh.positions[v];
+    const Vec3& d = directions_[v];
+    const Vec3 b = glm::normalize(glm::cross(surface_.vertex_normals[v], d));
+    ++stamp_;
+    frontier_.assign(1, v);
+    seen_[v] = stamp_;
+    for (size_t k = 0; k < frontier_.size(); ++k) {
+      for (const auto& [w, length] : surface_.edges[frontier_[k]]) {
+        (void)length;
+        if (seen_[w] == stamp_) continue;
+        seen_[w] = stamp_;
+        const Vec3 q = surface_.mesh.positions[w] - p;
+        if (glm::length(q) > radius_) continue;
+        frontier_.push_back(w);
+        if (!whole && !done_[w]) continue;
+        const glm::dvec2 offset = options_.pixels_per_unit * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
+        neighbours_.push_back({w, offset, std::exp(-glm::dot(offset, offset) / (2.0 * sigma2_))});
+      }
+    }
+  }
+
+  const BaseSurface& surface_;
+  const std::vector<Vec3>& directions_;
+  const ColourImage& sample_;
+  const PaintOptions& options_;
+  std::mt19937_64 rng_;
+  std::vector<glm::dvec3> colour_;
+  std::vector<glm::dvec2> source_;
+  std::vector<uint8_t> done_;
+  std::vector<uint32_t> seen_;
+  uint32_t stamp_ = 0;
+  std::vector<int32_t> frontier_;
+  std::vector<Neighbour> neighbours_;
+  double radius_ = 0.0, sigma2_ = 1.0;
+};
+
+}  // namespace
+
+PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
+                          const std::vector<FieldConstraint>& constraints, const PaintOptions& options) {
+  check(base, sample, options);
+  PaintResult result;
+  result.levels = refinement_levels(base, options);
+  result.mesh = split_faces(base, result.levels);
+  const BaseSurface surface(result.mesh);
+  const GuidanceField field = interpolate_field(surface, constraints);
+  result.order = sweep_order(sweep_function(surface, field.directions));
+  Painter painter(surface, field.directions, sample, options);
+  double cost = 0.0;
+  for (int pass = 0; pass < options.passes; ++pass) {
+    cost = 0.0;
+    for (int32_t v : result.order) cost += painter.visit(v, pass > 0);
+  }
+  result.mean_cost = result.order.empty() ? 0.0 : cost / static_cast<double>(result.order.size());
+  result.source = painter.sources();
+  result.mesh.colors.resize(result.mesh.num_vertices());
+  for (size_t v = 0; v < result.mesh.num_vertices(); ++v) {
+    const glm::dvec3 c = glm::clamp(painter.colours()[v], 0.0, 1.0);
+    result.mesh.colors[v] = {static_cast<uint8_t>(std::lround(255.0 * c.x)), static_cast<uint8_t>(std::lround(255.0 * c.y)),
+                             static_cast<uint8_t>(std::lround(255.0 * c.z))};
+  }
+  return result;
+}
+
+}  // namespace meshquilt

@@ -1,0 +1,47 @@
+#pragma once
+//! Colour synthesized over a surface from an image sample (Turk 2001, "Texture Synthesis on
+//! Surfaces"): the base refined until a vertex falls at least every sample pixel, each vertex
+//! coloured in a sweep along the orienting field by the sample position whose neighbourhood best
+//! matches its coloured neighbours', read in the vertex's own frame (field, normal x field).
+//!
+//! Candidates come from the neighbours' own sample positions, each shifted by its offset
+//! (coherent synthesis, Ashikhmin 2001), plus a few at random: a search over a handful of
+//! positions instead of the whole sample. Turk's sweep is sequential, and so is this one.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "mesh/tri_mesh.h"
+#include "paint/colour_image.h"
+#include "surface/guidance_field.h"
+
+namespace meshquilt {
+
+struct PaintOptions {
+  double pixels_per_unit = 0.0;   //!< sample pixels per base unit (> 0)
+  int window = 7;                 //!< neighbourhood width in pixels, odd, 3..21
+  int random_candidates = 4;      //!< sample positions tried at random per vertex, besides the coherent ones
+  int passes = 2;                 //!< the sweep, then passes over whole neighbourhoods (1..8)
+  uint64_t seed = 1;              //!< of every random choice
+  size_t max_vertices = 4000000;  //!< refuse a refinement past this many vertices
+};
+
+struct PaintResult {
+  TriMesh mesh;                        //!< the base refined, with a colour per vertex
+  std::vector<glm::dvec2> source;      //!< #V sample position (pixels) each vertex took its colour from
+  std::vector<int32_t> order;          //!< the sweep: vertices in the order they were coloured
+  int levels = 0;                      //!< 1-to-4 splits of the base
+  double mean_cost = 0.0;              //!< mean neighbourhood mismatch of the last pass, per neighbour
+};
+
+//! Paints `base` from `sample`, oriented by the guidance field of `constraints` (synth's
+//! --field; none: its default). Constraint vertices are the base's own (split_faces keeps them).
+//! Deterministic for a seed.
+//! \throw InputError(invalid_option) for options out of range or a refinement past max_vertices;
+//!        InputError(invalid_mesh) for a base without faces; SolverError from the solves.
+PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
+                          const std::vector<FieldConstraint>& constraints, const PaintOptions& options);
+
+}  // namespace meshquilt

@@ -1,0 +1,52 @@
+// `meshquilt paint` end to end: a coloured PLY over the sphere, and one-line errors.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "mesh/mesh_io.h"
+#include "support/run_cli.h"
+
+namespace meshquilt {
+namespace {
+
+TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_cli";
+  std::filesystem::create_directories(dir);
+  {
+    // 8 x 8: the left half red, the right half white.
+    std::ofstream image(dir / "sample.ppm", std::ios::binary);
+    image << "P6\n8 8\n255\n";
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) image << (x < 4 ? std::string("\xff\x00\x00", 3) : std::string("\xff\xff\xff", 3));
+  }
+  const std::string out = (dir / "out.ply").string();
+  const test::CliResult r = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
+                              (dir / "sample.ppm").string() + " --scale 0.5 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const TriMesh painted = read_mesh(out);
+  ASSERT_EQ(painted.colors.size(), painted.num_vertices());
+  size_t red = 0;
+  for (const auto& c : painted.colors) {
+    EXPECT_EQ(c[0], 255);
+    EXPECT_EQ(c[1], c[2]);
+    red += c[1] == 0;
+  }
+  EXPECT_GT(red, painted.num_vertices() / 4);
+  EXPECT_LT(red, 3 * painted.num_vertices() / 4);
+
+  const test::CliResult missing = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) +
+                                    "/data/sphere.off --image " + (dir / "none.png").string() + " -o " + out);
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.output.find("none.png"), std::string::npos) << missing.output;
+  const test::CliResult window = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
+                                   (dir / "sample.ppm").string() + " --window 4 -o " + out);
+  EXPECT_NE(window.exit_code, 0);
+  EXPECT_NE(window.output.find("--window"), std::string::npos) << window.output;
+  // The good output is left as it was.
+  EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
+}
+
+}  // namespace
+}  // namespace meshquilt

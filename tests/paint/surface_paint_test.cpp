@@ -1,0 +1,135 @@
+// The sweep against closed forms, and the painter against samples whose right answer is known:
+// a constant colour, and stripes that must come back as a translated copy of themselves.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "paint/surface_paint.h"
+#include "paint/sweep_order.h"
+#include "support/surface_fixtures.h"
+#include "surface/surface_types.h"
+
+namespace meshquilt {
+namespace {
+
+std::vector<FieldConstraint> along(const TriMesh& mesh, const Vec3& d) {
+  std::vector<FieldConstraint> constraints;
+  for (size_t v = 0; v < mesh.num_vertices(); v += 7) constraints.push_back({static_cast<int32_t>(v), d});
+  return constraints;
+}
+
+TEST(SweepFunction, IsTheCoordinateAlongAConstantFieldOnAPlane) {
+  const TriMesh plane = test::flat_grid(12, 9, 0.5, 0.3, 4);
+  const BaseSurface surface(plane);
+  const Vec3 d = glm::normalize(Vec3(2.0, 1.0, 0.0));
+  const std::vector<Vec3> directions(plane.num_vertices(), d);
+  const std::vector<double> s = sweep_function(surface, directions);
+  // grad s = d exactly: s is the coordinate along d plus a constant.
+  const double c = s[0] - glm::dot(plane.positions[0], d);
+  for (size_t v = 0; v < plane.num_vertices(); ++v) EXPECT_NEAR(s[v] - glm::dot(plane.positions[v], d), c, 1e-6);
+  const std::vector<int32_t> order = sweep_order(s);
+  for (size_t k = 1; k < order.size(); ++k)
+    EXPECT_LE(glm::dot(plane.positions[order[k - 1]], d), glm::dot(plane.positions[order[k]], d) + 1e-6);
+}
+
+TEST(SweepFunction, RisesAlongTheFieldOnASphere) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface surface(sphere);
+  const GuidanceField field = interpolate_field(surface, {});
+  const std::vector<double> s = sweep_function(surface, field.directions);
+  int along = 0, rising = 0;
+  for (size_t v = 0; v < sphere.num_vertices(); ++v)
+    for (const auto& [w, length] : surface.edges[v]) {
+      const Vec3 e = (sphere.positions[w] - sphere.positions[v]) / length;
+      if (glm::dot(e, field.directions[v]) < 0.9) continue;
+      ++along;
+      rising += s[w] > s[v];
+    }
+  ASSERT_GT(along, 100);
+  EXPECT_GT(static_cast<double>(rising) / along, 0.95);
+}
+
+ColourImage stripes() {
+  // Period 8 along x: 4 red, 4 blue.
+  ColourImage image;
+  image.width = image.height = 16;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) image.rgb.push_back(x % 8 < 4 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1));
+  return image;
+}
+
+TEST(SurfacePaint, AConstantSampleGivesItsColourEverywhere) {
+  ColourImage image;
+  image.width = image.height = 8;
+  image.rgb.assign(64, glm::dvec3(0.2, 0.4, 0.6));
+  PaintOptions options;
+  options.pixels_per_unit = 8.0;
+  const PaintResult painted = paint_surface(test::icosphere(2), image, {}, options);
+  EXPECT_GT(painted.levels, 0);
+  ASSERT_EQ(painted.mesh.colors.size(), painted.mesh.num_vertices());
+  for (const auto& c : painted.mesh.colors) EXPECT_EQ(c, (std::array<uint8_t, 3>{51, 102, 153}));
+}
+
+TEST(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
+  // A plane one sample pixel per grid step, the field along x: the painted colours are the
+  // stripes at x * pixels_per_unit + phase for one phase, up to the blend at stripe borders.
+  const TriMesh plane = test::flat_grid(40, 20, 1.0 / 16.0, 0.0);
+  PaintOptions options;
+  options.pixels_per_unit = 16.0;
+  const ColourImage image = stripes();
+  const PaintResult painted = paint_surface(plane, image, along(plane, Vec3(1, 0, 0)), options);
+  const auto colour = [](const PaintResult& p, size_t v) {
+    const auto& c = p.mesh.colors[v];
+    return glm::dvec3(c[0], c[1], c[2]) / 255.0;
+  };
+  // One phase for the whole plane (the first vertex's, drawn at random): every colour is the
+  // stripes' there, to rounding.
+  const double phase = painted.source[0].x - painted.mesh.positions[0].x * options.pixels_per_unit;
+  size_t close = 0;
+  for (size_t v = 0; v < painted.mesh.num_vertices(); ++v) {
+    const glm::dvec3 expected = image.sample({painted.mesh.positions[v].x * options.pixels_per_unit + phase, 0.5});
+    close += glm::length(colour(painted, v) - expected) < 1.0 / 255.0;
+  }
+  EXPECT_GT(static_cast<double>(close) / static_cast<double>(painted.mesh.num_vertices()), 0.99);
+  // Grid neighbours along x in the same stripe (more red than blue, or less): 3 in 4 when the
+  // stripes run across x, all of them when the field is turned a quarter and they run along x.
+  const auto same_along_x = [&](const PaintResult& p) {
+    size_t same = 0, pairs = 0;
+    for (size_t v = 0; v < p.mesh.num_vertices(); ++v)
+      for (size_t w = 0; w < p.mesh.num_vertices(); ++w) {
+        const Vec3 d = p.mesh.positions[w] - p.mesh.positions[v];
+        if (std::abs(d.x - 1.0 / 16.0) > 1e-9 || std::abs(d.y) > 1e-9) continue;
+        ++pairs;
+        same += (colour(p, v).x > colour(p, v).z) == (colour(p, w).x > colour(p, w).z);
+      }
+    return static_cast<double>(same) / static_cast<double>(pairs);
+  };
+  EXPECT_NEAR(same_along_x(painted), 0.75, 0.05);
+  const PaintResult turned = paint_surface(plane, image, along(plane, Vec3(0, 1, 0)), options);
+  EXPECT_GT(same_along_x(turned), 0.95);
+}
+
+TEST(SurfacePaint, IsDeterministicForASeedAndRefusesBadOptions) {
+  const TriMesh sphere = test::icosphere(2);
+  PaintOptions options;
+  options.pixels_per_unit = 6.0;
+  const ColourImage image = stripes();
+  const PaintResult a = paint_surface(sphere, image, {}, options);
+  const PaintResult b = paint_surface(sphere, image, {}, options);
+  EXPECT_EQ(a.mesh.colors, b.mesh.colors);
+  options.seed = 2;
+  EXPECT_NE(paint_surface(sphere, image, {}, options).mesh.colors, a.mesh.colors);
+  options.window = 4;
+  EXPECT_THROW(paint_surface(sphere, image, {}, options), InputError);
+  options.window = 7;
+  options.pixels_per_unit = 1e6;
+  EXPECT_THROW(paint_surface(sphere, image, {}, options), InputError);
+}
+
+}  // namespace
+}  // namespace meshquilt
