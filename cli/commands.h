@@ -15,5 +15,6 @@ void add_embed_command(CLI::App& app);
 void add_edit_command(CLI::App& app);
 void add_animate_command(CLI::App& app);
 void add_paint_command(CLI::App& app);
+void add_relief_command(CLI::App& app);
 
 }  // namespace meshquilt::cli

@@ -101,16 +101,15 @@ std::vector<uint8_t> dilated(const std::vector<uint8_t>& cells, const CellWindow
 // inside its outline, and outside it (a turned swatch's corners) only near kept geometry.
 // Swatch elements at the patch's translation that were left out (`left_out`: centred past the
 // domain's edge, or crossing a surface patch's edge) are accounted for where kept geometry lies
-// within part of their width: half across a surface patch's edge (`whole_inputs_only`); a quarter
-// at the plane's edge, where a patch seeded again places elements centred up to a quarter past
-// it, so a wider bare strip there is seeded again. Without this, the cells under a yarn that did not
+// within part of their width: half, or a quarter where a patch seeded again could place them
+// (request.reachable), so a wider bare strip there is seeded again. Without this, the cells under a yarn that did not
 // fit in a surface patch counted as covered and stayed bare (a tenth of the bunny under the
 // small weave).
 std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
                                    const std::vector<int32_t>& representative, const std::vector<TriMesh>& left_out,
                                    const Rect2& footprint, const QuiltSwatch& swatch, const PlaneGrid& grid,
-                                   const std::function<bool(const glm::dvec2&)>& inside_domain, bool whole_inputs_only) {
-  const double left_out_reach = whole_inputs_only ? 0.5 : 0.25;
+                                   const PatchRequest& request) {
+  const std::function<bool(const glm::dvec2&)>& inside_domain = request.inside_domain;
   // Only cells under the footprint can be covered; what decides them lies within r cells of
   // them, r the most dilations below (1, or a left-out element's reach).
   const int x0 = grid.column(footprint.lo.x), x1 = grid.column(footprint.hi.x);
@@ -120,10 +119,12 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   for (const TriMesh& m : left_out) {
     const Rect2 b = xy_bounds(m);
     const glm::dvec2 size = b.hi - b.lo;
-    // Across a surface patch's edge, by its bounds; at the plane's edge, by its narrowest width,
-    // since a diagonal yarn's bounds are nearly as wide as it is long.
-    const double width = whole_inputs_only ? std::min(size.x, size.y) : ConvexOutline(m.positions).width();
-    half_widths.push_back(std::max(1, static_cast<int>(left_out_reach * width / grid.cell)));
+    // Across a surface patch's edge, by its bounds, half of it; at the plane's edge, by its
+    // narrowest width (a diagonal yarn's bounds are nearly as wide as it is long), a quarter
+    // where a patch seeded again could place it.
+    const bool reachable = request.reachable && request.reachable(0.5 * (b.lo + b.hi));
+    const double width = request.whole_inputs_only ? std::min(size.x, size.y) : ConvexOutline(m.positions).width();
+    half_widths.push_back(std::max(1, static_cast<int>((reachable ? 0.25 : 0.5) * width / grid.cell)));
     reach = std::max(reach, half_widths.back());
   }
   const CellWindow window{std::max(0, x0 - reach), std::max(0, y0 - reach), std::min(grid.nx - 1, x1 + reach),
@@ -577,7 +578,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   add_unmerged_inputs(ctx, in_partnered, outcome);
   if (!request.account_per_input) ctx.representative.clear();
   outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out, footprint,
-                                  swatch, grid, request.inside_domain, request.whole_inputs_only);
+                                  swatch, grid, request);
   return outcome;
 }
 

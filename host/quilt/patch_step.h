@@ -99,6 +99,11 @@ struct PatchRequest {
   //! the surface: geometry past its edge has no place to go). Planar quilting lets elements whose
   //! centre is inside hang over the rectangle's edge.
   bool whole_inputs_only = false;
+  //! Planar: where an element's centre may lie for a patch seeded again to place it (the plane
+  //! grown by a quarter element). A left-out element centred there leaves at most a quarter of
+  //! its width bare before its cells are seeded again; one centred beyond, half (see
+  //! PatchOutcome::covered). Empty: half for every left-out element.
+  std::function<bool(const glm::dvec2&)> reachable;
   //! A cell is covered only where each input over it is accounted for by what stands for it in
   //! the layer (see PatchOutcome::covered); false: where any kept geometry lies within a cell.
   //! On a surface, neighbouring patches register their elements less well than on a plane, and

@@ -67,6 +67,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   std::nth_element(element_sides.begin(), element_sides.begin() + element_sides.size() / 2, element_sides.end());
   const double reach = element_sides.empty() ? 0.0 : 0.25 * element_sides[element_sides.size() / 2];
   const Rect2 retry_domain{domain.lo - glm::dvec2(reach), domain.hi + glm::dvec2(reach)};
+  request.reachable = [&retry_domain](const glm::dvec2& p) { return retry_domain.contains(p); };
 
   SeedLoopDomain plane;
   plane.quilt_patch_at = [&](int seed_cell) {

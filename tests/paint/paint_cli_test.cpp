@@ -1,7 +1,8 @@
-// `meshquilt paint` end to end: a coloured PLY over the sphere, and one-line errors.
+// `meshquilt paint` and `relief` end to end: a coloured and a raised sphere, and one-line errors.
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -46,6 +47,38 @@ TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
   EXPECT_NE(window.output.find("--window"), std::string::npos) << window.output;
   // The good output is left as it was.
   EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
+}
+
+TEST(ReliefCli, RaisesTheSphereAndRefusesBadInput) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_relief_cli";
+  std::filesystem::create_directories(dir);
+  {
+    // 8 x 8 grey: black and white columns.
+    std::ofstream image(dir / "heights.pgm", std::ios::binary);
+    image << "P5\n8 8\n255\n";
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) image << (x < 4 ? std::string("\x00", 1) : std::string("\xff", 1));
+  }
+  const std::string sphere = std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off";
+  const std::string out = (dir / "out.ply").string();
+  const test::CliResult r = test::run_cli("relief --base " + sphere + " --image " + (dir / "heights.pgm").string() +
+                                          " --height 0.05 --scale 0.5 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const TriMesh raised = read_mesh(out);
+  // The sphere of radius 0.5 refined: its vertices lie within the facets' sag below 0.5, and
+  // raised ones up to 0.05 above.
+  size_t up = 0;
+  for (const Vec3& p : raised.positions) {
+    const double radius = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    EXPECT_LT(radius, 0.5 + 0.05 + 1e-4);  // normals of the facets, not quite radial
+    up += radius > 0.52;
+  }
+  EXPECT_GT(up, raised.num_vertices() / 4);
+  EXPECT_LT(up, 3 * raised.num_vertices() / 4);
+  const test::CliResult no_height =
+      test::run_cli("relief --base " + sphere + " --image " + (dir / "heights.pgm").string() + " --height 0 -o " + out);
+  EXPECT_NE(no_height.exit_code, 0);
+  EXPECT_NE(no_height.output.find("--height"), std::string::npos) << no_height.output;
 }
 
 }  // namespace

@@ -1,0 +1,78 @@
+// Relief against closed forms: a constant height image raises every vertex by the same height
+// along its normal; a hollow too tight for the height is clamped, and the result stays closed
+// and free of self-intersections, where the unclamped one passes through itself.
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "mesh/topology.h"
+#include "paint/surface_relief.h"
+#include "spatial/intersecting_pairs.h"
+#include "support/surface_fixtures.h"
+#include "support/torus.h"
+#include "surface/base_layout.h"
+#include "surface/surface_types.h"
+
+namespace meshquilt {
+namespace {
+
+ColourImage grey(double value) {
+  ColourImage image;
+  image.width = image.height = 8;
+  image.rgb.assign(64, glm::dvec3(value));
+  return image;
+}
+
+size_t self_intersections(const TriMesh& mesh) {
+  return intersecting_face_pairs(mesh, std::vector<int32_t>(mesh.num_faces(), 0), IntersectionScope::same_element)
+      .size();
+}
+
+TEST(SurfaceRelief, AConstantImageRaisesEveryVertexAlongItsNormal) {
+  const TriMesh sphere = test::icosphere(2);
+  ReliefOptions options;
+  options.paint.pixels_per_unit = 6.0;
+  options.height = 0.1;
+  const ReliefResult relief = relief_surface(sphere, grey(0.6), {}, options);
+  // The same refinement, measured independently: each vertex moves by 0.6 x 0.1 along its normal.
+  const TriMesh refined = split_faces(sphere, relief.levels);
+  ASSERT_EQ(relief.mesh.num_vertices(), refined.num_vertices());
+  EXPECT_EQ(relief.mesh.triangles, refined.triangles);
+  const BaseSurface surface(refined);
+  const double expected = 0.1 * std::round(0.6 * 255.0) / 255.0;
+  EXPECT_EQ(relief.clamped, 0);
+  for (size_t v = 0; v < refined.num_vertices(); ++v) {
+    const Vec3 moved = relief.mesh.positions[v] - refined.positions[v];
+    EXPECT_NEAR(glm::length(moved - expected * surface.vertex_normals[v]), 0.0, 1e-12);
+  }
+  EXPECT_TRUE(inspect_surface(relief.mesh).closed_manifold());
+  EXPECT_THROW(relief_surface(sphere, grey(0.6), {}, ReliefOptions{options.paint, -1.0}), InputError);
+}
+
+TEST(SurfaceRelief, AHollowTooTightIsClampedAndStaysClosedWithoutSelfIntersections) {
+  // A torus with a hole of radius 0.1 and a relief of 0.5: raised in full, the inner side
+  // passes through itself across the hole.
+  const TriMesh ring = test::torus(0.4, 0.3, 32, 12);
+  ReliefOptions options;
+  options.paint.pixels_per_unit = 12.0;
+  options.height = 0.5;
+  const ReliefResult relief = relief_surface(ring, grey(1.0), {}, options);
+  EXPECT_GT(relief.clamped, 0);
+  EXPECT_TRUE(inspect_surface(relief.mesh).closed_manifold());
+  EXPECT_EQ(self_intersections(relief.mesh), 0u);
+  // Where nothing is in the way (the outer side) the height is the whole of it.
+  double highest = 0.0;
+  for (double h : relief.heights) highest = std::max(highest, h);
+  EXPECT_NEAR(highest, 0.5, 1e-9);
+  // The same heights unclamped do pass through themselves.
+  const TriMesh refined = split_faces(ring, relief.levels);
+  const BaseSurface surface(refined);
+  TriMesh unclamped = refined;
+  for (size_t v = 0; v < refined.num_vertices(); ++v) unclamped.positions[v] += 0.5 * surface.vertex_normals[v];
+  EXPECT_GT(self_intersections(unclamped), 0u);
+}
+
+}  // namespace
+}  // namespace meshquilt
