@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -44,6 +46,31 @@ int refinement_levels(const TriMesh& base, const PaintOptions& o) {
   return levels;
 }
 
+// The sample at half its size: each pixel the mean of a 2 x 2 block (even sizes only).
+ColourImage halved(const ColourImage& image) {
+  ColourImage out;
+  out.width = image.width / 2;
+  out.height = image.height / 2;
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      out.rgb.push_back(0.25 * (image.at(2 * x, 2 * y) + image.at(2 * x + 1, 2 * y) + image.at(2 * x, 2 * y + 1) +
+                                image.at(2 * x + 1, 2 * y + 1)));
+  return out;
+}
+
+// The edge (a, b) of each vertex split_faces(mesh, 1) adds, in the order it adds them.
+std::vector<std::pair<int32_t, int32_t>> midpoint_parents(const TriMesh& mesh) {
+  std::vector<std::pair<int32_t, int32_t>> parents;
+  std::unordered_map<uint64_t, int32_t> seen;
+  for (const Tri& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int32_t a = t[k], b = t[(k + 1) % 3];
+      const uint64_t key = (static_cast<uint64_t>(std::min(a, b)) << 32) | static_cast<uint32_t>(std::max(a, b));
+      if (seen.emplace(key, static_cast<int32_t>(parents.size())).second) parents.emplace_back(a, b);
+    }
+  return parents;
+}
+
 // A neighbour of the vertex being coloured: where it lies in the vertex's frame, in pixels.
 struct Neighbour {
   int32_t vertex;
@@ -54,14 +81,19 @@ struct Neighbour {
 class Painter {
  public:
   Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const ColourImage& sample,
-          const PaintOptions& options)
-      : surface_(surface), directions_(directions), sample_(sample), options_(options), rng_(options.seed) {
+          double pixels_per_unit, const PaintOptions& options, uint64_t seed)
+      : surface_(surface),
+        directions_(directions),
+        sample_(sample),
+        options_(options),
+        pixels_per_unit_(pixels_per_unit),
+        rng_(seed) {
     const size_t n = surface.mesh.num_vertices();
     colour_.assign(n, glm::dvec3(0.0));
     source_.assign(n, glm::dvec2(0.0));
     done_.assign(n, 0);
     seen_.assign(n, 0);
-    radius_ = 0.5 * options.window / options.pixels_per_unit;
+    radius_ = 0.5 * options.window / pixels_per_unit;
     sigma2_ = std::pow(0.25 * options.window, 2.0);
   }
 
@@ -96,6 +128,15 @@ class Painter {
     return weights > 0.0 ? best / weights : 0.0;
   }
 
+  // Every vertex starts from a sample position (a coarser level's, carried over): coloured there.
+  void start_from(const std::vector<glm::dvec2>& sources) {
+    for (size_t v = 0; v < sources.size(); ++v) {
+      source_[v] = wrap(sources[v]);
+      colour_[v] = sample_.sample(source_[v]);
+      done_[v] = 1;
+    }
+  }
+
   const std::vector<glm::dvec3>& colours() const { return colour_; }
   const std::vector<glm::dvec2>& sources() const { return source_; }
 
@@ -123,7 +164,7 @@ class Painter {
         if (glm::length(q) > radius_) continue;
         frontier_.push_back(w);
         if (!whole && !done_[w]) continue;
-        const glm::dvec2 offset = options_.pixels_per_unit * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
+        const glm::dvec2 offset = pixels_per_unit_ * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
         neighbours_.push_back({w, offset, std::exp(-glm::dot(offset, offset) / (2.0 * sigma2_))});
       }
     }
@@ -133,6 +174,7 @@ class Painter {
   const std::vector<Vec3>& directions_;
   const ColourImage& sample_;
   const PaintOptions& options_;
+  double pixels_per_unit_;
   std::mt19937_64 rng_;
   std::vector<glm::dvec3> colour_;
   std::vector<glm::dvec2> source_;
@@ -151,24 +193,63 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
   check(base, sample, options);
   PaintResult result;
   result.levels = refinement_levels(base, options);
-  result.mesh = split_faces(base, result.levels);
-  const BaseSurface surface(result.mesh);
-  const GuidanceField field = interpolate_field(surface, constraints);
-  result.order = sweep_order(sweep_function(surface, field.directions));
-  Painter painter(surface, field.directions, sample, options);
+  // Coarse to fine: the sample halved while it still holds a window and a pixel, one split level
+  // for each halving, so that every level has about a vertex per pixel of its sample.
+  std::vector<ColourImage> pyramid{sample};
+  while (static_cast<int>(pyramid.size()) <= result.levels && pyramid.back().width % 2 == 0 &&
+         pyramid.back().height % 2 == 0 && pyramid.back().width / 2 > options.window &&
+         pyramid.back().height / 2 > options.window)
+    pyramid.push_back(halved(pyramid.back()));
+  const int coarsest = static_cast<int>(pyramid.size()) - 1;
+  TriMesh mesh = split_faces(base, result.levels - coarsest);
+  std::vector<glm::dvec2> sources;
   double cost = 0.0;
-  for (int pass = 0; pass < options.passes; ++pass) {
-    cost = 0.0;
-    for (int32_t v : result.order) cost += painter.visit(v, pass > 0);
+  for (int step = coarsest; step >= 0; --step) {
+    const double pixels_per_unit = std::ldexp(options.pixels_per_unit, -step);
+    const BaseSurface surface(mesh);
+    const GuidanceField field = interpolate_field(surface, constraints);
+    result.order = sweep_order(sweep_function(surface, field.directions));
+    Painter painter(surface, field.directions, pyramid[step], pixels_per_unit, options, options.seed + step);
+    // The coarsest level is swept; a finer one starts from the coarser positions carried over
+    // and is corrected with whole neighbourhoods.
+    const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);
+    if (step < coarsest) painter.start_from(sources);
+    for (int pass = 0; pass < passes; ++pass) {
+      cost = 0.0;
+      for (int32_t v : result.order) cost += painter.visit(v, pass > 0 || step < coarsest);
+    }
+    sources = painter.sources();
+    if (step == 0) {
+      result.mesh = std::move(mesh);
+      result.source = sources;
+      const std::vector<glm::dvec3>& colours = painter.colours();
+      result.mesh.colors.resize(result.mesh.num_vertices());
+      for (size_t v = 0; v < result.mesh.num_vertices(); ++v) {
+        const glm::dvec3 c = glm::clamp(colours[v], 0.0, 1.0);
+        result.mesh.colors[v] = {static_cast<uint8_t>(std::lround(255.0 * c.x)),
+                                 static_cast<uint8_t>(std::lround(255.0 * c.y)),
+                                 static_cast<uint8_t>(std::lround(255.0 * c.z))};
+      }
+      break;
+    }
+    // To the next level: old vertices at twice their position; a new one (an edge's midpoint)
+    // where its first parent's position and its offset in that parent's frame put it.
+    const std::vector<std::pair<int32_t, int32_t>> parents = midpoint_parents(mesh);
+    TriMesh finer = split_faces(mesh, 1);
+    const double next = 2.0 * pixels_per_unit;
+    std::vector<glm::dvec2> carried(finer.num_vertices());
+    for (size_t v = 0; v < mesh.num_vertices(); ++v) carried[v] = 2.0 * sources[v];
+    for (size_t k = 0; k < parents.size(); ++k) {
+      const int32_t a = parents[k].first;
+      const Vec3& d = field.directions[a];
+      const Vec3 b = glm::normalize(glm::cross(surface.vertex_normals[a], d));
+      const Vec3 q = finer.positions[mesh.num_vertices() + k] - mesh.positions[a];
+      carried[mesh.num_vertices() + k] = 2.0 * sources[a] + next * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
+    }
+    sources = std::move(carried);
+    mesh = std::move(finer);
   }
-  result.mean_cost = result.order.empty() ? 0.0 : cost / static_cast<double>(result.order.size());
-  result.source = painter.sources();
-  result.mesh.colors.resize(result.mesh.num_vertices());
-  for (size_t v = 0; v < result.mesh.num_vertices(); ++v) {
-    const glm::dvec3 c = glm::clamp(painter.colours()[v], 0.0, 1.0);
-    result.mesh.colors[v] = {static_cast<uint8_t>(std::lround(255.0 * c.x)), static_cast<uint8_t>(std::lround(255.0 * c.y)),
-                             static_cast<uint8_t>(std::lround(255.0 * c.z))};
-  }
+  result.mean_cost = cost / static_cast<double>(std::max<size_t>(1, result.order.size()));
   return result;
 }
 

@@ -6,7 +6,9 @@
 //!
 //! Candidates come from the neighbours' own sample positions, each shifted by its offset
 //! (coherent synthesis, Ashikhmin 2001), plus a few at random: a search over a handful of
-//! positions instead of the whole sample. Turk's sweep is sequential, and so is this one.
+//! positions instead of the whole sample. Turk's sweep is sequential, and so is this one. It runs
+//! coarse to fine: the sample halved while it holds more than a window, the sweep on the matching
+//! coarse split level, each finer level started from the positions carried over and corrected.
 
 #include <cstdint>
 #include <vector>
