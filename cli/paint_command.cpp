@@ -6,18 +6,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
-#include "mesh/base_mesh.h"
+#include "image_synthesis_inputs.h"
 #include "mesh/mesh_io.h"
-#include "paint/colour_image.h"
 #include "paint/surface_paint.h"
-#include "surface/guidance_field.h"
-#include "texture_files.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -31,30 +26,16 @@ struct PaintArgs {
 
 void run_paint(PaintArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  if (!(args.scale > 0.0 && args.scale <= 10.0))
-    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ErrorKind::invalid_option);
-  check_mesh_output(args.output);
-  check_writable(args.output);
-  if (!args.stats.empty()) check_writable(args.stats);
-  const TriMesh base = prepare_base(read_mesh(args.base), args.base);
-  const ColourImage sample = read_colour_image(args.image);
-  std::vector<FieldConstraint> constraints;
-  if (!args.field.empty()) constraints = read_field_file(args.field, base);
-  // --scale: the sample's width over the base's bounding-box diagonal, as synth's swatch side.
-  Vec3 lo = base.positions.front(), hi = lo;
-  for (const Vec3& p : base.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  args.options.pixels_per_unit =
-      args.pixels_per_unit > 0.0 ? args.pixels_per_unit : sample.width / (args.scale * glm::length(hi - lo));
-  const PaintResult painted = paint_surface(base, sample, constraints, args.options);
+  const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
+                                                               args.pixels_per_unit, args.output, args.stats);
+  args.options.pixels_per_unit = in.pixels_per_unit;
+  const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options);
   write_mesh(painted.mesh, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::json summary = {{"base", args.base},
                                   {"image", args.image},
                                   {"output", args.output},
-                                  {"sample", {sample.width, sample.height}},
+                                  {"sample", {in.sample.width, in.sample.height}},
                                   {"pixels_per_unit", args.options.pixels_per_unit},
                                   {"levels", painted.levels},
                                   {"vertices", painted.mesh.num_vertices()},
@@ -63,7 +44,7 @@ void run_paint(PaintArgs& args) {
                                   {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu vertices coloured from %s (%d x %d) in %.1f s\n", args.output.c_str(),
-              painted.mesh.num_vertices(), args.image.c_str(), sample.width, sample.height, seconds);
+              painted.mesh.num_vertices(), args.image.c_str(), in.sample.width, in.sample.height, seconds);
 }
 
 }  // namespace

@@ -6,17 +6,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
-#include "mesh/base_mesh.h"
+#include "image_synthesis_inputs.h"
 #include "mesh/mesh_io.h"
-#include "paint/colour_image.h"
 #include "paint/surface_relief.h"
-#include "surface/guidance_field.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -30,23 +26,10 @@ struct ReliefArgs {
 
 void run_relief(ReliefArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  if (!(args.scale > 0.0 && args.scale <= 10.0))
-    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(args.scale), ErrorKind::invalid_option);
-  check_mesh_output(args.output);
-  check_writable(args.output);
-  if (!args.stats.empty()) check_writable(args.stats);
-  const TriMesh base = prepare_base(read_mesh(args.base), args.base);
-  const ColourImage sample = read_colour_image(args.image);
-  std::vector<FieldConstraint> constraints;
-  if (!args.field.empty()) constraints = read_field_file(args.field, base);
-  Vec3 lo = base.positions.front(), hi = lo;
-  for (const Vec3& p : base.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  args.options.paint.pixels_per_unit =
-      args.pixels_per_unit > 0.0 ? args.pixels_per_unit : sample.width / (args.scale * glm::length(hi - lo));
-  const ReliefResult relief = relief_surface(base, sample, constraints, args.options);
+  const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
+                                                               args.pixels_per_unit, args.output, args.stats);
+  args.options.paint.pixels_per_unit = in.pixels_per_unit;
+  const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options);
   write_mesh(relief.mesh, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   double highest = 0.0;

@@ -68,6 +68,15 @@ def preferences(context):
     return addon.preferences if addon else None
 
 
+def module_or_report(operator, context, what):
+    """The Python module from the preferences' folder, or None after reporting that `what` needs it."""
+    prefs = preferences(context)
+    module = quilt_job.import_module(prefs.module_path if prefs else "")
+    if module is None:
+        operator.report({"ERROR"}, "meshquilt: %s needs the Python module (see the preferences)" % what)
+    return module
+
+
 def mesh_arrays(obj, depsgraph=None):
     """World-space vertices and triangles of a mesh object (evaluated when a depsgraph is given)."""
     source = obj.evaluated_get(depsgraph) if depsgraph else obj
@@ -287,10 +296,8 @@ class MESHQUILT_OT_follow_base(bpy.types.Operator):
 
     def execute(self, context):
         obj = context.active_object
-        prefs = preferences(context)
-        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        module = module_or_report(self, context, "following the base")
         if module is None:
-            self.report({"ERROR"}, "meshquilt: following the base needs the Python module (see the preferences)")
             return {"CANCELLED"}
         base = bpy.data.objects[obj["meshquilt_base"]]
         try:
@@ -347,10 +354,8 @@ class MESHQUILT_OT_animate(bpy.types.Operator):
 
     def execute(self, context):
         obj = context.active_object
-        prefs = preferences(context)
-        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        module = module_or_report(self, context, "animating")
         if module is None:
-            self.report({"ERROR"}, "meshquilt: animating needs the Python module (see the preferences)")
             return {"CANCELLED"}
         animation = swatch_animation(context, module)
         if animation is None:
@@ -454,10 +459,8 @@ class MESHQUILT_OT_preview_field(bpy.types.Operator):
 
     def execute(self, context):
         base = context.active_object
-        prefs = preferences(context)
-        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        module = module_or_report(self, context, "the field preview")
         if module is None:
-            self.report({"ERROR"}, "meshquilt: the field preview needs the Python module (see the preferences)")
             return {"CANCELLED"}
         s = settings_of(context)
         vertices, faces = mesh_arrays(base)
@@ -496,10 +499,8 @@ class MESHQUILT_OT_follow_frames(bpy.types.Operator):
 
     def execute(self, context):
         obj = context.active_object
-        prefs = preferences(context)
-        module = quilt_job.import_module(prefs.module_path if prefs else "")
+        module = module_or_report(self, context, "following the base")
         if module is None:
-            self.report({"ERROR"}, "meshquilt: following the base needs the Python module (see the preferences)")
             return {"CANCELLED"}
         base = bpy.data.objects[obj["meshquilt_base"]]
         texture = base64.b64decode(obj["meshquilt_texture"])

@@ -16,7 +16,7 @@
 
 #include "core/error.h"
 #include "spatial/box_grid.h"
-#include "spatial/convex_outline.h"
+#include "mesh/convex_outline.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {

@@ -6,43 +6,10 @@
 #include <glm/vec2.hpp>
 #include <unordered_map>
 
+#include "mesh/convex_outline.h"
 #include "mesh/topology.h"
 
 namespace meshquilt {
-namespace {
-
-double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
-
-// Andrew's monotone chain: the hull's corners, counter-clockwise.
-std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points) {
-  std::sort(points.begin(), points.end(),
-            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() < 3) return points;
-  std::vector<glm::dvec2> hull(2 * points.size());
-  size_t k = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
-double distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-  const glm::dvec2 ab = b - a;
-  const double length2 = glm::dot(ab, ab);
-  const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + t * ab));
-}
-
-}  // namespace
 
 std::vector<uint8_t> cut_by_border(const std::vector<TriMesh>& elements) {
   std::vector<uint8_t> cut(elements.size(), 0);
@@ -50,8 +17,8 @@ std::vector<uint8_t> cut_by_border(const std::vector<TriMesh>& elements) {
   for (const TriMesh& e : elements)
     for (const Tri& t : e.triangles)
       for (int32_t v : t) points.emplace_back(e.positions[v]);
-  const std::vector<glm::dvec2> hull = convex_hull(std::move(points));
-  if (hull.size() < 3) return cut;
+  const ConvexOutline hull(std::move(points));
+  if (hull.corners().size() < 3) return cut;
   for (size_t k = 0; k < elements.size(); ++k) {
     const TriMesh& e = elements[k];
     std::unordered_map<uint64_t, int> uses;
@@ -70,10 +37,7 @@ std::vector<uint8_t> cut_by_border(const std::vector<TriMesh>& elements) {
     const double reach = 1.5 * rim_length / static_cast<double>(rim.size());
     for (int32_t v : rim) {
       const glm::dvec2 p(e.positions[v]);
-      bool near = false;
-      for (size_t h = 0; h < hull.size() && !near; ++h)
-        near = distance_to_segment(p, hull[h], hull[(h + 1) % hull.size()]) <= reach;
-      if (near) {
+      if (hull.boundary_distance(p) <= reach) {
         cut[k] = 1;
         break;
       }

@@ -25,7 +25,7 @@
 
 #include "core/error.h"
 #include "mesh/tri_mesh.h"
-#include "spatial/convex_outline.h"
+#include "mesh/convex_outline.h"
 #include "quilt/correspondence.h"
 #include "quilt/element_deformation.h"
 #include "quilt/merging/element_merging.h"

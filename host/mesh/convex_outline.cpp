@@ -1,4 +1,4 @@
-#include "spatial/convex_outline.h"
+#include "mesh/convex_outline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,10 +23,14 @@ double segment_distance(const glm::dvec2& p, const glm::dvec2& a, const glm::dve
 
 }  // namespace
 
-ConvexOutline::ConvexOutline(const std::vector<Vec3>& points) {
-  std::vector<glm::dvec2> sorted;
-  sorted.reserve(points.size());
-  for (const Vec3& p : points) sorted.emplace_back(p.x, p.y);
+ConvexOutline::ConvexOutline(const std::vector<Vec3>& points) : ConvexOutline([&] {
+  std::vector<glm::dvec2> xy;
+  xy.reserve(points.size());
+  for (const Vec3& p : points) xy.emplace_back(p.x, p.y);
+  return xy;
+}()) {}
+
+ConvexOutline::ConvexOutline(std::vector<glm::dvec2> sorted) {
   std::sort(sorted.begin(), sorted.end(),
             [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
@@ -61,6 +65,13 @@ bool ConvexOutline::contains(const glm::dvec2& p, double margin) const {
     if (-cross(a, b, p) / glm::length(b - a) > margin) return false;
   }
   return true;
+}
+
+double ConvexOutline::boundary_distance(const glm::dvec2& p) const {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < corners_.size(); ++i)
+    nearest = std::min(nearest, segment_distance(p, corners_[i], corners_[(i + 1) % corners_.size()]));
+  return nearest;
 }
 
 double ConvexOutline::width() const {

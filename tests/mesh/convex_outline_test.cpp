@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "spatial/convex_outline.h"
+#include "mesh/convex_outline.h"
 
 namespace meshquilt {
 namespace {
@@ -74,6 +74,8 @@ TEST(ConvexOutline, MatchesBruteForceOnRandomPoints) {
       // Grown by a margin: the edge lines moved out hold at least the points within the margin
       // (and a little more at corners, never more than margin / sin(half the corner angle)).
       if (d <= 0.1) EXPECT_TRUE(outline.contains(q, 0.1));
+      // Outside, the distance to the boundary is the distance to the polygon.
+      if (d > 0.0) EXPECT_NEAR(outline.boundary_distance(q), d, 1e-12);
     }
   }
 }

@@ -15,13 +15,18 @@ namespace meshquilt {
 class ConvexOutline {
  public:
   ConvexOutline() = default;
-  //! The convex hull of the points' x-y projections (Andrew's monotone chain).
+  //! The convex hull of the points (Andrew's monotone chain).
+  explicit ConvexOutline(std::vector<glm::dvec2> points);
+  //! The convex hull of the points' x-y projections.
   explicit ConvexOutline(const std::vector<Vec3>& points);
 
   //! Whether `p` lies inside the outline grown outward by `margin` (each edge moved out by
   //! `margin`, so corners grow a little more). An empty outline contains nothing; one of one or
   //! two points contains what lies within `margin` of them.
   bool contains(const glm::dvec2& p, double margin = 0.0) const;
+
+  //! Distance from `p` to the outline's boundary (its edges), inside or out; infinity when empty.
+  double boundary_distance(const glm::dvec2& p) const;
 
   //! The least distance between two parallel lines enclosing the outline (its width across its
   //! narrowest direction: a diagonal yarn's thickness, not its bounding box); 0 below 3 corners.

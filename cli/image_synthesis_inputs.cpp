@@ -1,0 +1,34 @@
+#include "image_synthesis_inputs.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "atomic_file.h"
+#include "core/error.h"
+#include "mesh/base_mesh.h"
+#include "mesh/mesh_io.h"
+
+namespace meshquilt::cli {
+
+ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
+                                                 const std::string& field, double scale, double pixels_per_unit,
+                                                 const std::string& output, const std::string& stats) {
+  if (!(scale > 0.0 && scale <= 10.0))
+    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
+  check_mesh_output(output);
+  check_writable(output);
+  if (!stats.empty()) check_writable(stats);
+  ImageSynthesisInputs in;
+  in.base = prepare_base(read_mesh(base), base);
+  in.sample = read_colour_image(image);
+  if (!field.empty()) in.constraints = read_field_file(field, in.base);
+  Vec3 lo = in.base.positions.front(), hi = lo;
+  for (const Vec3& p : in.base.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * glm::length(hi - lo));
+  return in;
+}
+
+}  // namespace meshquilt::cli

@@ -1,0 +1,27 @@
+#pragma once
+// What `paint` and `relief` read: the base, the image sample, the field and the sample's scale.
+
+#include <string>
+#include <vector>
+
+#include "mesh/tri_mesh.h"
+#include "paint/colour_image.h"
+#include "surface/guidance_field.h"
+
+namespace meshquilt::cli {
+
+struct ImageSynthesisInputs {
+  TriMesh base;                            //!< prepared as synth prepares a base
+  ColourImage sample;
+  std::vector<FieldConstraint> constraints;  //!< from the field file; empty: the default field
+  double pixels_per_unit = 0.0;            //!< sample pixels per base unit
+};
+
+//! Checks the output and stats paths, then reads the inputs. pixels_per_unit > 0 is taken as
+//! given; otherwise --scale S makes the sample's width S x the base's bounding-box diagonal.
+//! \throw InputError for a scale outside (0, 10]; what the readers throw.
+ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
+                                                 const std::string& field, double scale, double pixels_per_unit,
+                                                 const std::string& output, const std::string& stats);
+
+}  // namespace meshquilt::cli
