@@ -92,17 +92,21 @@ std::vector<FieldConstraint> field_constraints(const Array3d& points, const Arra
   return constraints_at_points(rows(points, "points"), rows(directions, "directions"), base, "field");
 }
 
+py::array_t<double> positions_array(const std::vector<Vec3>& positions) {
+  py::array_t<double> out({static_cast<py::ssize_t>(positions.size()), py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (size_t i = 0; i < positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) a(i, k) = positions[i][k];
+  return out;
+}
+
 py::dict dict_of(const TriMesh& m) {
-  py::array_t<double> vertices({static_cast<py::ssize_t>(m.num_vertices()), py::ssize_t{3}});
   py::array_t<int32_t> faces({static_cast<py::ssize_t>(m.num_faces()), py::ssize_t{3}});
-  auto v = vertices.mutable_unchecked<2>();
   auto f = faces.mutable_unchecked<2>();
-  for (size_t i = 0; i < m.num_vertices(); ++i)
-    for (int k = 0; k < 3; ++k) v(i, k) = m.positions[i][k];
   for (size_t i = 0; i < m.num_faces(); ++i)
     for (int k = 0; k < 3; ++k) f(i, k) = m.triangles[i][k];
   py::dict out;
-  out["vertices"] = vertices;
+  out["vertices"] = positions_array(m.positions);
   out["faces"] = faces;
   const auto ints = [](const std::vector<int32_t>& values) {
     py::array_t<int32_t> a(static_cast<py::ssize_t>(values.size()));
@@ -169,13 +173,6 @@ VineOptions vine_options(bool small, uint64_t seed, const py::kwargs& kwargs) {
   return o;
 }
 
-py::array_t<double> positions_array(const std::vector<Vec3>& positions) {
-  py::array_t<double> out({static_cast<py::ssize_t>(positions.size()), py::ssize_t{3}});
-  auto a = out.mutable_unchecked<2>();
-  for (size_t i = 0; i < positions.size(); ++i)
-    for (int k = 0; k < 3; ++k) a(i, k) = positions[i][k];
-  return out;
-}
 
 std::vector<Vec3> positions_of(const Array3d& a, const char* what) {
   if (a.ndim() != 2 || a.shape(1) != 3)

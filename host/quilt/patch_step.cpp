@@ -107,8 +107,8 @@ std::vector<uint8_t> dilated(const std::vector<uint8_t>& cells, const CellWindow
 // small weave).
 std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
                                    const std::vector<int32_t>& representative, const std::vector<TriMesh>& left_out,
-                                   const Rect2& footprint, const QuiltSwatch& swatch, const PlaneGrid& grid,
-                                   const PatchRequest& request) {
+                                   const std::vector<int32_t>& left_out_source, const Rect2& footprint,
+                                   const QuiltSwatch& swatch, const PlaneGrid& grid, const PatchRequest& request) {
   const std::function<bool(const glm::dvec2&)>& inside_domain = request.inside_domain;
   // Only cells under the footprint can be covered; what decides them lies within r cells of
   // them, r the most dilations below (1, or a left-out element's reach).
@@ -116,14 +116,15 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   const int y0 = grid.row(footprint.lo.y), y1 = grid.row(footprint.hi.y);
   std::vector<int> half_widths;
   int reach = 1;
-  for (const TriMesh& m : left_out) {
-    const Rect2 b = xy_bounds(m);
+  for (size_t m = 0; m < left_out.size(); ++m) {
+    const int32_t k = left_out_source[m];
+    const Rect2& b = swatch.element_bounds[k];
     const glm::dvec2 size = b.hi - b.lo;
     // Across a surface patch's edge, by its bounds, half of it; at the plane's edge, by its
     // narrowest width (a diagonal yarn's bounds are nearly as wide as it is long), a quarter
     // where a patch seeded again could place it.
-    const bool reachable = request.reachable && request.reachable(0.5 * (b.lo + b.hi));
-    const double width = request.whole_inputs_only ? std::min(size.x, size.y) : ConvexOutline(m.positions).width();
+    const bool reachable = request.reachable && request.reachable(0.5 * (b.lo + b.hi) + footprint.lo);
+    const double width = request.whole_inputs_only ? std::min(size.x, size.y) : swatch.element_widths[k];
     half_widths.push_back(std::max(1, static_cast<int>((reachable ? 0.25 : 0.5) * width / grid.cell)));
     reach = std::max(reach, half_widths.back());
   }
@@ -284,15 +285,15 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
   std::vector<Vec3> from_corner = swatch.mesh.positions;
   for (Vec3& p : from_corner) p -= Vec3(bounds.lo, 0.0);
   swatch.outline = ConvexOutline(from_corner);
-  std::vector<double> sides;
   for (const TriMesh& e : swatch.elements) {
     swatch.element_bounds.push_back(xy_bounds(e));
-    sides.push_back(ConvexOutline(e.positions).width());
+    swatch.element_widths.push_back(ConvexOutline(e.positions).width());
     swatch.closed_elements = swatch.closed_elements && inspect_surface(e).closed_manifold();
   }
-  if (!sides.empty()) {
-    std::nth_element(sides.begin(), sides.begin() + sides.size() / 2, sides.end());
-    swatch.outline_slack = 0.5 * sides[sides.size() / 2];
+  if (!swatch.element_widths.empty()) {
+    std::vector<double> widths = swatch.element_widths;
+    std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+    swatch.outline_slack = 0.5 * widths[widths.size() / 2];
   }
   const TriMesh joined = join_elements(swatch.elements);
   swatch.unfolded_elements =
@@ -324,7 +325,8 @@ namespace {
 // to count as covered (see covered_cells), and a later patch seeded there places them.
 struct PlacedSwatch {
   std::vector<TriMesh> inputs, left_out;
-  std::vector<int32_t> input_source;  // the swatch element of each input
+  std::vector<int32_t> input_source;     // the swatch element of each input
+  std::vector<int32_t> left_out_source;  // and of each left out
 };
 
 PlacedSwatch place_swatch(const QuiltSwatch& swatch, const PatchRequest& request, const glm::dvec2& t) {
@@ -339,6 +341,7 @@ PlacedSwatch place_swatch(const QuiltSwatch& swatch, const PatchRequest& request
                      [&](const Vec3& p) { return request.inside_domain(glm::dvec2(p)); }));
     if (!inside) {
       placed.left_out.push_back(std::move(placed_element));
+      placed.left_out_source.push_back(static_cast<int32_t>(k));
       continue;
     }
     placed.inputs.push_back(std::move(placed_element));
@@ -577,7 +580,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   }
   add_unmerged_inputs(ctx, in_partnered, outcome);
   if (!request.account_per_input) ctx.representative.clear();
-  outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out, footprint,
+  outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out,
+                                  placed_swatch.left_out_source, footprint,
                                   swatch, grid, request);
   return outcome;
 }

@@ -67,9 +67,10 @@ struct QuiltSwatch {
   TriMesh mesh;                       //!< in its swatch frame (thin along z)
   std::vector<TriMesh> elements;      //!< its elements, in element order
   std::vector<Rect2> element_bounds;  //!< x-y bounds of each element
+  std::vector<double> element_widths; //!< x-y width of each element (ConvexOutline::width)
   glm::dvec2 extent{0.0};             //!< x-y size of the swatch
   ConvexOutline outline;              //!< x-y convex hull of its geometry, from its bounds' low corner
-  //! Half the median element's x-y width (ConvexOutline::width): how far past the outline a cell
+  //! Half the median element width: how far past the outline a cell
   //! may lie and still count as under the swatch (the rows of an upright mail end in rounded
   //! corners).
   double outline_slack = 0.0;

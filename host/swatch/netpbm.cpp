@@ -137,12 +137,14 @@ GrayImage parse_netpbm(std::string bytes, const std::string& name) {
   } else {
     const bool raw = kind >= 5;
     if (raw) reader.end_header();
+    if (color) image.rgb.reserve(3 * pixels);
     for (auto& v : image.values) {
       if (channels == 1) {
         v = sample(raw) / maxval;
       } else {
         const double r = sample(raw), g = sample(raw), b = sample(raw);
         v = (0.299 * r + 0.587 * g + 0.114 * b) / maxval;
+        image.rgb.insert(image.rgb.end(), {r / maxval, g / maxval, b / maxval});
       }
     }
   }

@@ -14,6 +14,8 @@ struct GrayImage {
   int width = 0;
   int height = 0;
   std::vector<double> values;
+  //! A PPM's own colours: #(width x height x 3), R G B per pixel in [0, 1]; empty for PBM and PGM.
+  std::vector<double> rgb;
 
   double at(int column, int row) const { return values[static_cast<size_t>(row) * width + column]; }
 };

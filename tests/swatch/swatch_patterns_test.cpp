@@ -69,10 +69,13 @@ TEST_F(NetpbmFiles, PlainAndRawGraymapsAgree) {
   for (size_t k = 0; k < plain.values.size(); ++k) EXPECT_NEAR(w.values[k], plain.values[k], 1e-15);
 }
 
-TEST_F(NetpbmFiles, ColourImagesBecomeLuma) {
+TEST_F(NetpbmFiles, ColourImagesBecomeLumaAndKeepTheirColours) {
   const GrayImage image = read_netpbm(write("a.ppm", "P3 2 1 255 255 0 0 0 0 255\n"));
   EXPECT_NEAR(image.at(0, 0), 0.299, 1e-12);
   EXPECT_NEAR(image.at(1, 0), 0.114, 1e-12);
+  // and keep their own colours beside.
+  EXPECT_EQ(image.rgb, (std::vector<double>{1, 0, 0, 0, 0, 1}));
+  EXPECT_TRUE(read_netpbm(write("a.pgm", "P2 2 1 255 255 0\n")).rgb.empty());
 }
 
 TEST_F(NetpbmFiles, BadImagesAreIoErrors) {
