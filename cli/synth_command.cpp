@@ -152,6 +152,7 @@ void add_curved_summary(const SynthArgs& args, const SurfaceQuiltStats& stats, c
   summary["layout_windows"] = stats.layout_windows;
   summary["field_symmetry"] = stats.field_symmetry;
   summary["cones"] = stats.cones;
+  summary["on_lattice"] = stats.on_lattice;
   summary["outside_vertices"] = stats.outside_vertices;
   summary["shell_height"] = stats.shell_height;
   summary["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;

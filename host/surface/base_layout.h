@@ -18,10 +18,11 @@ namespace meshquilt {
 class BaseLayout {
  public:
   //! target, weight: per base face, as smoothest_direction_field takes them; drawn: the user
-  //! gave directions, which the field must follow.
+  //! gave directions, which the field must follow; lattice: the texture's periods, as
+  //! seamless_layout takes them.
   //! \throw SolverError when a solve fails.
   BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight,
-             bool drawn = false);
+             bool drawn = false, const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt);
   BaseLayout(const BaseLayout&) = delete;
   BaseLayout& operator=(const BaseLayout&) = delete;
 

@@ -133,6 +133,7 @@ int32_t SurfacePatch::face_index(int32_t base_face) const {
 void SurfacePatch::transform(double angle, double scale) {
   const double c = std::cos(angle) * scale, s = std::sin(angle) * scale;
   for (glm::dvec2& p : uv) p = {c * p.x - s * p.y, s * p.x + c * p.y};
+  origin = {c * origin.x - s * origin.y, s * origin.x + c * origin.y};
 }
 
 void SurfacePatch::index() {
@@ -358,6 +359,7 @@ void set_faces(const TriMesh& mesh, SurfacePatch& patch, const std::vector<int32
 SurfacePatch& centred(SurfacePatch& patch, const SurfacePoint& seed) {
   const glm::dvec2 seed_plane = patch.to_plane(seed);
   for (glm::dvec2& p : patch.uv) p -= seed_plane;
+  patch.origin = seed_plane;
   return patch;
 }
 

@@ -34,6 +34,10 @@ struct SurfacePatch {
   double area_distortion = 1.0;   //!< max over min over faces of plane area / base area
   int flipped_faces = 0;          //!< faces whose plane image is mirrored
   PatchChart chart = PatchChart::conformal;
+  //! Where the seed lies in the chart the plane was cut from (for a layout window, the layout's
+  //! coordinates on the seed face's side of its seams): the plane is that chart moved to put the
+  //! seed at the origin.
+  glm::dvec2 origin{0.0};
 
   //! Plane position of a surface point on a patch face. \pre face_index(p.face) >= 0
   glm::dvec2 to_plane(const SurfacePoint& p) const;
@@ -43,7 +47,7 @@ struct SurfacePatch {
   SurfacePoint nearest(const glm::dvec2& p) const;
   //! Index of a base face in `faces`, or -1.
   int32_t face_index(int32_t base_face) const;
-  //! Applies p -> rotation(angle) * p * scale to every plane coordinate.
+  //! Applies p -> rotation(angle) * p * scale to every plane coordinate and to `origin`.
   void transform(double angle, double scale);
   //! Builds the point-location grid; call after the last transform.
   void index();

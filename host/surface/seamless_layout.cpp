@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <map>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 #include <Eigen/Sparse>
 #include <glm/geometric.hpp>
 
 #include "numerics/sparse_solve.h"
+#include "quilt/swatch_lattice.h"
 
 namespace meshquilt {
 namespace {
@@ -148,7 +151,14 @@ int32_t make_wedges(const BaseSurface& base, SeamlessLayout& layout) {
 // The layout with the seams' transitions held by a stiff penalty. Per face, with X the axis and
 // Y = normal x X: grad u along X, grad v along Y, both of one length (conformal), so the layout
 // may take whatever even scale makes the field a gradient; and, weakly, that length 1.
-void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges) {
+// Seams whose translation is held (#F x 3, on the edges from the lower face).
+struct SeamHold {
+  std::vector<std::array<glm::dvec2, 3>> translation;
+  std::vector<std::array<uint8_t, 3>> held;
+};
+
+// unit: the length grad u and grad v are weakly held at.
+void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges, double unit, const SeamHold* hold) {
   const TriMesh& mesh = base.mesh;
   const int quarter = 4 / layout.symmetry;  // quarter turns per unit of turn
   std::vector<Eigen::Triplet<double>> triplets;
@@ -182,8 +192,8 @@ void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedge
     add_row(uy, 0.0, area);
     add_row(vx, 0.0, area);
     add_row(conformal, 0.0, area);
-    add_row(ux, 1.0, kUnitWeight * area);
-    add_row(vy, 1.0, kUnitWeight * area);
+    add_row(ux, unit, kUnitWeight * area);
+    add_row(vy, unit, kUnitWeight * area);
   }
   // Seams: (U_g(a) - U_g(b)) - R(-turn) (U_f(a) - U_f(b)) = 0, both coordinates.
   const double stiff = 1e10 * std::max(diagonal, 1e-300);
@@ -200,6 +210,12 @@ void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedge
       const glm::dvec2 ex = quarter_turned({1.0, 0.0}, quarter * layout.turn[f][k]);
       const glm::dvec2 ey = quarter_turned({0.0, 1.0}, quarter * layout.turn[f][k]);
       for (int row = 0; row < 2; ++row) {
+        if (hold && hold->held[f][k]) {
+          // U_g(x) - R U_f(x) = translation, at both ends.
+          for (const auto& [gx, fx] : {std::pair{ga, fa}, std::pair{gb, fb}})
+            add_row({{2 * gx + row, 1.0}, {2 * fx, -ex[row]}, {2 * fx + 1, -ey[row]}}, hold->translation[f][k][row], stiff);
+          continue;
+        }
         const std::pair<int32_t, double> terms[6] = {{2 * ga + row, 1.0},         {2 * gb + row, -1.0},
                                                      {2 * fa, -ex[row]},         {2 * fa + 1, -ey[row]},
                                                      {2 * fb, ex[row]},          {2 * fb + 1, ey[row]}};
@@ -220,7 +236,8 @@ void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedge
 
 // Scales the layout so that its median scale (the square root of layout area over base area,
 // by base area) is 1: the texture's size is what was asked for over most of the base.
-void normalize_scale(const BaseSurface& base, SeamlessLayout& layout) {
+// Returns the factor the layout was divided by.
+double normalize_scale(const BaseSurface& base, SeamlessLayout& layout) {
   std::vector<std::pair<double, double>> scales;  // (scale, base area)
   double total = 0.0;
   for (size_t f = 0; f < base.mesh.num_faces(); ++f) {
@@ -232,14 +249,150 @@ void normalize_scale(const BaseSurface& base, SeamlessLayout& layout) {
     scales.emplace_back(std::sqrt(area / base.face_areas[f]), base.face_areas[f]);
     total += base.face_areas[f];
   }
-  if (scales.empty()) return;
+  if (scales.empty()) return 1.0;
   std::sort(scales.begin(), scales.end());
   double below = 0.0;
   for (const auto& [scale, area] : scales) {
     below += area;
     if (below < 0.5 * total) continue;
     for (glm::dvec2& p : layout.uv) p /= scale;
-    return;
+    return scale;
+  }
+  return 1.0;
+}
+
+// A cut edge from its lower face f (edge k, ends a and b) to g, with the layout vertices on
+// either side of each end.
+struct SeamEdge {
+  int32_t f = -1;
+  int k = 0;
+  int32_t a = -1, b = -1;
+  int32_t fa = -1, fb = -1, ga = -1, gb = -1;
+};
+
+std::vector<SeamEdge> seam_edges(const BaseSurface& base, const SeamlessLayout& layout) {
+  const TriMesh& mesh = base.mesh;
+  std::vector<SeamEdge> edges;
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (!layout.cut[f][k] || static_cast<size_t>(g) < f) continue;
+      const Tri& tg = mesh.triangles[g];
+      SeamEdge e;
+      e.f = static_cast<int32_t>(f);
+      e.k = k;
+      e.a = t[k];
+      e.b = t[(k + 1) % 3];
+      e.fa = layout.corner_wedge[3 * f + k];
+      e.fb = layout.corner_wedge[3 * f + (k + 1) % 3];
+      e.ga = layout.corner_wedge[3 * g + corner_of(tg, e.a)];
+      e.gb = layout.corner_wedge[3 * g + corner_of(tg, e.b)];
+      edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
+// One seam: cut edges joined end to end through the same pair of layout vertices, which share
+// one translation. side: +1 for an edge oriented as the first, -1 for one reversed.
+struct Seam {
+  std::vector<size_t> edges;
+  std::vector<int8_t> sides;
+};
+
+std::vector<Seam> join_seams(const BaseSurface& base, const SeamlessLayout& layout, const std::vector<SeamEdge>& edges) {
+  std::map<std::array<int32_t, 3>, std::vector<std::pair<size_t, int32_t>>> at_end;  // -> (edge, its f side)
+  const auto key = [](int32_t v, int32_t p, int32_t q) { return std::array<int32_t, 3>{v, std::min(p, q), std::max(p, q)}; };
+  // At a cone the two sides of a seam are related by different turns through either edge.
+  std::vector<uint8_t> cone(base.mesh.num_vertices(), 0);
+  for (int32_t v : layout.cones) cone[v] = 1;
+  for (size_t i = 0; i < edges.size(); ++i) {
+    const SeamEdge& e = edges[i];
+    if (e.fa != e.ga && !cone[e.a]) at_end[key(e.a, e.fa, e.ga)].emplace_back(i, e.fa);
+    if (e.fb != e.gb && !cone[e.b]) at_end[key(e.b, e.fb, e.gb)].emplace_back(i, e.fb);
+  }
+  std::vector<int8_t> side(edges.size(), 0);
+  std::vector<Seam> seams;
+  for (size_t root = 0; root < edges.size(); ++root) {
+    if (side[root] != 0) continue;
+    side[root] = 1;
+    Seam seam;
+    std::vector<size_t> stack{root};
+    seam.edges.push_back(root);
+    while (!stack.empty()) {
+      const size_t i = stack.back();
+      stack.pop_back();
+      const SeamEdge& e = edges[i];
+      for (const auto& [v, fv, gv] : {std::tuple{e.a, e.fa, e.ga}, std::tuple{e.b, e.fb, e.gb}}) {
+        if (fv == gv || cone[v]) continue;
+        for (const auto& [j, fj] : at_end[key(v, fv, gv)]) {
+          if (side[j] != 0) continue;
+          side[j] = static_cast<int8_t>(fj == fv ? side[i] : -side[i]);
+          seam.edges.push_back(j);
+          stack.push_back(j);
+        }
+      }
+    }
+    for (size_t i : seam.edges) seam.sides.push_back(side[i]);
+    seams.push_back(std::move(seam));
+  }
+  return seams;
+}
+
+// Rounds the seams' translations to periods of the lattice greedily (Bommes et al. 2009): the
+// seams nearest a period first, a third of those left at a time, the layout solved again with
+// them held, so that the rest adapt before they are rounded in turn.
+void round_to_lattice(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges, double unit,
+                      const std::array<glm::dvec2, 2>& lattice) {
+  const int quarter = 4 / layout.symmetry;
+  const std::vector<SeamEdge> edges = seam_edges(base, layout);
+  const std::vector<Seam> seams = join_seams(base, layout, edges);
+  const auto turn_of = [&](const SeamEdge& e) { return quarter * layout.turn[e.f][e.k]; };
+  // The seam's translation in its first edge's orientation (a reversed edge's U_f = R^-1 U_g - R^-1 t).
+  const auto mean_translation = [&](const Seam& seam) {
+    glm::dvec2 mean(0.0);
+    for (size_t n = 0; n < seam.edges.size(); ++n) {
+      const SeamEdge& e = edges[seam.edges[n]];
+      for (const auto& [from, to] : {std::pair{e.fa, e.ga}, std::pair{e.fb, e.gb}}) {
+        const glm::dvec2 t = layout.uv[to] - quarter_turned(layout.uv[from], turn_of(e));
+        mean += seam.sides[n] > 0 ? t : -quarter_turned(t, -turn_of(e));
+      }
+    }
+    return mean / (2.0 * static_cast<double>(seam.edges.size()));
+  };
+  // Distances compared to a millionth of the shorter period, ties by seam: a symmetric base
+  // rounds its seams in the same order whatever the floating-point environment.
+  const double step = 1e-6 * std::min(glm::length(lattice[0]), glm::length(lattice[1]));
+  SeamHold hold;
+  hold.translation.assign(base.mesh.num_faces(), {glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0)});
+  hold.held.assign(base.mesh.num_faces(), {0, 0, 0});
+  std::vector<size_t> left(seams.size());
+  std::iota(left.begin(), left.end(), size_t{0});
+  while (!left.empty()) {
+    std::vector<std::pair<double, size_t>> by_distance;
+    for (size_t s : left) {
+      const glm::dvec2 t = mean_translation(seams[s]);
+      by_distance.emplace_back(std::round(glm::distance(t, nearest_period(t, lattice)) / step), s);
+    }
+    std::sort(by_distance.begin(), by_distance.end());
+    const size_t batch = (left.size() + 2) / 3;
+    left.clear();
+    for (size_t n = 0; n < by_distance.size(); ++n) {
+      const size_t s = by_distance[n].second;
+      if (n >= batch) {
+        left.push_back(s);
+        continue;
+      }
+      const Seam& seam = seams[s];
+      const glm::dvec2 period = nearest_period(mean_translation(seam), lattice);
+      for (size_t k = 0; k < seam.edges.size(); ++k) {
+        const SeamEdge& e = edges[seam.edges[k]];
+        hold.translation[e.f][e.k] = seam.sides[k] > 0 ? period : -quarter_turned(period, turn_of(e));
+        hold.held[e.f][e.k] = 1;
+      }
+    }
+    solve_layout(base, layout, wedges, unit, &hold);
   }
 }
 
@@ -254,7 +407,8 @@ glm::dvec2 quarter_turned(const glm::dvec2& p, int quarter_turns) {
   }
 }
 
-SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field) {
+SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
+                               const std::optional<std::array<glm::dvec2, 2>>& lattice) {
   const TriMesh& mesh = base.mesh;
   SeamlessLayout layout;
   layout.symmetry = field.symmetry;
@@ -277,8 +431,12 @@ SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& fi
     if (index[v] != 0) layout.cones.push_back(static_cast<int32_t>(v));
   cut_open(base, tree, layout);
   const int32_t wedges = make_wedges(base, layout);
-  solve_layout(base, layout, wedges);
-  normalize_scale(base, layout);
+  solve_layout(base, layout, wedges, 1.0, nullptr);
+  const double scale = normalize_scale(base, layout);
+  if (lattice) {
+    round_to_lattice(base, layout, wedges, 1.0 / scale, *lattice);
+    layout.on_lattice = true;
+  }
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
     if (base.face_areas[f] <= 0.0) continue;
     const glm::dvec2 a = layout.uv[layout.corner_wedge[3 * f]], b = layout.uv[layout.corner_wedge[3 * f + 1]],

@@ -4,11 +4,13 @@
 //! it, lengths in base units as far as the field allows). The base is cut open through the
 //! field's cones (and around handles); across a cut the layout continues by a rotation through a
 //! multiple of 2 pi / n plus a translation, so a patch is a window of it unfolded across cuts and
-//! two overlapping windows differ by such a rotation and translation alone. Translations are not
-//! rounded to integers: geometry matching absorbs them.
+//! two overlapping windows differ by such a rotation and translation alone. Where the texture
+//! repeats on a lattice, every seam's translation is rounded to one of its periods, so that the
+//! pattern placed by patches on either side of a seam, or all round a cone, lines up.
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -28,14 +30,19 @@ struct SeamlessLayout {
   std::vector<glm::dvec2> uv;                //!< #layout vertices, base units
   std::vector<int32_t> cones;                //!< vertices where the field has a nonzero index
   int flipped_faces = 0;                     //!< faces mirrored in the layout (near cones)
+  bool on_lattice = false;                   //!< seams continue by periods of a lattice
 };
 
 //! Combs the field over a spanning tree of faces, cuts the base along the edges off that tree
 //! that do not end in a dangling branch (which keeps the cones and the handles cut), and solves
 //! min sum_f a_f (|grad u - axis_f|^2 + |grad v - normal_f x axis_f|^2) over the cut-open base with
 //! the seams' transitions as constraints (a stiff penalty: one sparse solve).
+//! lattice: the texture's periods in layout units (base units as the layout's median scale
+//! holds them), with a point it turns about at the layout's origin; the seams' translations are
+//! rounded to its periods and the layout solved again with them held.
 //! \throw SolverError when the solve fails.
-SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field);
+SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
+                               const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt);
 
 //! A set of base faces laid out from the layout, unfolded from `start` across cuts.
 struct LayoutWindow {

@@ -13,6 +13,7 @@
 #include "mesh/topology.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
+#include "quilt/swatch_lattice.h"
 #include "quilt/swatch_symmetry.h"
 #include "surface/direction_field.h"
 #include "surface/element_placement.h"
@@ -120,7 +121,11 @@ class SurfaceDriver {
     std::vector<double> weight(faces, field_.held_vertices.empty() ? default_field_weight(base_) : guided_field_weight(base_));
     for (int32_t v : field_.held_vertices)
       for (int32_t f : base_.vertex_faces[v]) weight[f] = 10.0;
-    auto layout = std::make_unique<BaseLayout>(base_, n, target, weight, !field_.held_vertices.empty());
+    lattice_ = swatch_lattice(swatch_, n);
+    std::optional<std::array<glm::dvec2, 2>> periods;
+    if (lattice_) periods = std::array<glm::dvec2, 2>{unit_ * lattice_->basis[0], unit_ * lattice_->basis[1]};
+    auto layout = std::make_unique<BaseLayout>(base_, n, target, weight, !field_.held_vertices.empty(), periods);
+    stats_.on_lattice = layout->layout().on_lattice;
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();
     return layout;
@@ -155,7 +160,8 @@ class SurfaceDriver {
       StageTimer timer(seconds_, "layer");
       collect_layer(patch, layer, parts, obstacles);
     }
-    const PatchRequest request = make_request(patch, shrink, std::move(obstacles));
+    PatchRequest request = make_request(patch, shrink, std::move(obstacles));
+    if (layer.empty()) phase_first_placement(patch, request);
     const size_t existing = layer.size();
     const PatchOutcome outcome =
         quilt_patch(layer, request, swatch_, setup_.matcher, setup_.step, rng_, stats_.merges, seconds_, options_.cancel);
@@ -171,6 +177,17 @@ class SurfaceDriver {
         seeds_.mark_processed(c);
         processed_area_ += cells_.areas[c];
       }
+  }
+
+  // A patch with nothing around it places the swatch with a point it turns about on a period of
+  // the layout's lattice (the layout's origin is one), where the layout's seams expect it.
+  void phase_first_placement(const SurfacePatch& patch, PatchRequest& request) const {
+    if (!lattice_ || !layout_ || !layout_->layout().on_lattice || patch.chart != PatchChart::layout_window) return;
+    glm::dvec2 middle(0.0);
+    for (const glm::dvec2& t : request.candidates) middle += t;
+    middle /= static_cast<double>(request.candidates.size());
+    const glm::dvec2 period = nearest_period(middle + patch.origin + lattice_->centre, lattice_->basis);
+    request.candidates = {period - patch.origin - lattice_->centre};
   }
 
   // A cell that a patch seeded on it did not cover is seeded again with twice the distortion
@@ -467,6 +484,7 @@ class SurfaceDriver {
   double total_area_ = 0.0, processed_area_ = 0.0;
   std::unique_ptr<SurfaceEmbedding> embedding_;
   std::unique_ptr<BaseLayout> layout_;
+  std::optional<SwatchLattice> lattice_;  // the swatch's periods, where its pattern repeats
   std::vector<Vec3> face_field_;  // per base face, for field-aligned charts of single patches
   std::vector<SurfaceElement> elements_;
   std::vector<uint8_t> alive_;

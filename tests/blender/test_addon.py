@@ -147,7 +147,8 @@ check(np.allclose(directions[:, 0], directions[:, 1]) and np.allclose(directions
       "each runs along the curve")
 check(job.start().wait(600) and job.error is None, "a guided job quilts the cube")
 vertices, faces = meshquilt_blender.mesh_arrays(cube)
-guided = meshquilt.synth(meshquilt.swatch("chainmail", preset="small"), base=(vertices, faces), scale=0.4, seed=2,
+# The panel holds the scale as a float (0.4000000059604645): the module is given that one.
+guided = meshquilt.synth(meshquilt.swatch("chainmail", preset="small"), base=(vertices, faces), scale=settings.scale, seed=2,
                          field=(points, directions))
 check(np.array_equal(job.result["faces"], guided.faces) and np.allclose(job.result["vertices"], guided.vertices, atol=1e-5),
       "the guided job is the module's with that field")

@@ -1,9 +1,15 @@
-// Rotational symmetry of swatches, on boxes built here (tiles, warps and wefts, tilted plates) and
-// on the built-in chain mail and weave: the turns the shared surface layout may use at its seams.
+// Rotational symmetry and periods of swatches, on boxes built here (tiles, warps and wefts, tilted
+// plates, scattered ones) and on the built-in chain mail and weave: the turns and translations the
+// shared surface layout may use at its seams.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
+#include <glm/geometric.hpp>
+
+#include "quilt/swatch_lattice.h"
 #include "quilt/swatch_symmetry.h"
 #include "swatch/chainmail.h"
 #include "swatch/weave.h"
@@ -67,6 +73,99 @@ TEST(SwatchSymmetry, PlatesTiltedOneWayHaveNoTurnBothWaysAHalfTurn) {
 TEST(SwatchSymmetry, TheBuiltInChainMailAndWeaveAreTwoFold) {
   EXPECT_EQ(symmetry_of(make_chainmail(ChainmailOptions{})), 2);
   EXPECT_EQ(symmetry_of(make_weave(WeaveOptions{})), 2);
+}
+
+// Plates in rows 2.5 apart, every other row shifted by half the 3.0 spacing and tilted the other
+// way: a shift to the next row changes the tilt, so the periods are (3, 0) and (0, 5); a half
+// turn about z swaps the tilts, about a point between a row and the next.
+struct TiltedRows {
+  TriMesh mesh;
+  std::vector<glm::dvec2> centres;
+  std::vector<int> tilt;  // +1 or -1 per plate
+};
+
+TiltedRows tilted_rows() {
+  TiltedRows rows;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 5; ++i) {
+      const glm::dvec2 c(3.0 * i + 1.5 * (j % 2), 2.5 * j);
+      const int tilt = j % 2 ? 1 : -1;
+      add_box(rows.mesh, Vec3(c.x, c.y, 1.0), Vec3(1.0, 0.6, 0.1), 0.4 * tilt, 0);
+      rows.centres.push_back(c);
+      rows.tilt.push_back(tilt);
+    }
+  return rows;
+}
+
+bool on_lattice(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+  const double det = a.x * b.y - a.y * b.x;
+  const double k0 = (p.x * b.y - p.y * b.x) / det, k1 = (a.x * p.y - a.y * p.x) / det;
+  return std::abs(k0 - std::round(k0)) < 1e-6 && std::abs(k1 - std::round(k1)) < 1e-6;
+}
+
+TEST(SwatchLattice, OffsetRowsOfTiltedPlatesRepeatEveryOtherRow) {
+  const TiltedRows rows = tilted_rows();
+  const QuiltSwatch swatch = prepare_swatch(rows.mesh);
+  const std::optional<SwatchLattice> lattice = swatch_lattice(swatch, 1);
+  ASSERT_TRUE(lattice.has_value());
+  // The same lattice as (3, 0), (0, 5): each basis on the other's, of the same area.
+  const auto& [a, b] = lattice->basis;
+  EXPECT_TRUE(on_lattice(a, {3.0, 0.0}, {0.0, 5.0})) << a.x << " " << a.y;
+  EXPECT_TRUE(on_lattice(b, {3.0, 0.0}, {0.0, 5.0})) << b.x << " " << b.y;
+  EXPECT_NEAR(std::abs(a.x * b.y - a.y * b.x), 15.0, 1e-6);
+}
+
+TEST(SwatchLattice, AHalfTurnCentreMapsEveryPlateOntoOneTiltedTheOtherWay) {
+  const TiltedRows rows = tilted_rows();
+  const QuiltSwatch swatch = prepare_swatch(rows.mesh);
+  const std::optional<SwatchLattice> lattice = swatch_lattice(swatch, 2);
+  ASSERT_TRUE(lattice.has_value());
+  // prepare_swatch moves the swatch to its frame: compare in that frame, through the plates'
+  // own order (elements follow the input's).
+  const glm::dvec2 shift = glm::dvec2(swatch.elements[0].positions[0]) - glm::dvec2(rows.mesh.positions[0]);
+  const glm::dvec2 centre = lattice->centre - shift;
+  int mapped = 0;
+  for (size_t i = 0; i < rows.centres.size(); ++i) {
+    const glm::dvec2 image = 2.0 * centre - rows.centres[i];
+    for (size_t j = 0; j < rows.centres.size(); ++j)
+      if (glm::distance(image, rows.centres[j]) < 1e-6) {
+        EXPECT_EQ(rows.tilt[j], -rows.tilt[i]) << i << " -> " << j;
+        ++mapped;
+      }
+  }
+  // Every plate whose image lies within the rows: at least the middle ones.
+  EXPECT_GE(mapped, 10);
+}
+
+TEST(SwatchLattice, ScatteredPlatesHaveNone) {
+  TriMesh m;
+  uint32_t state = 12345;
+  const auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / static_cast<double>(1u << 24);
+  };
+  for (int k = 0; k < 20; ++k) add_box(m, Vec3(20.0 * next(), 20.0 * next(), 1.0), Vec3(0.5, 0.5, 0.1), 0.0, 0);
+  EXPECT_FALSE(swatch_lattice(prepare_swatch(m), 1).has_value());
+}
+
+TEST(SwatchLattice, TheBuiltInChainMailRepeatsOnItsRings) {
+  const QuiltSwatch swatch = prepare_swatch(make_chainmail(ChainmailOptions{}));
+  const std::optional<SwatchLattice> lattice = swatch_lattice(swatch, 2);
+  ASSERT_TRUE(lattice.has_value());
+  // Each period carries most ring centroids onto ring centroids, counted here directly.
+  std::vector<glm::dvec2> centres;
+  for (const TriMesh& ring : swatch.elements) {
+    glm::dvec2 c(0.0);
+    for (const Vec3& p : ring.positions) c += glm::dvec2(p);
+    centres.push_back(c / static_cast<double>(ring.positions.size()));
+  }
+  for (const glm::dvec2& period : lattice->basis) {
+    int hits = 0;
+    for (const glm::dvec2& c : centres)
+      for (const glm::dvec2& d : centres)
+        if (glm::distance(c + period, d) < 1e-3 * glm::length(period)) ++hits;
+    EXPECT_GE(hits, static_cast<int>(centres.size()) / 2) << period.x << " " << period.y;
+  }
 }
 
 }  // namespace

@@ -112,6 +112,45 @@ TEST(SeamlessLayout, SeamsAreRotationsByTheSymmetryPlusTranslations) {
   EXPECT_GT(seams, 0);
 }
 
+// The largest distance of a seam's translation (U_g(x) - R U_f(x) at both ends of every cut
+// edge) from a period of the lattice a, b, in periods.
+double worst_seam_off_lattice(const BaseSurface& base, const SeamlessLayout& layout, const glm::dvec2& a,
+                              const glm::dvec2& b) {
+  const auto corner = [](const Tri& tri, int32_t v) { return tri[0] == v ? 0 : tri[1] == v ? 1 : 2; };
+  const double det = a.x * b.y - a.y * b.x;
+  double worst = 0.0;
+  for (size_t f = 0; f < base.mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      if (!layout.cut[f][k]) continue;
+      const int32_t g = base.face_across[f][k];
+      const Tri& t = base.mesh.triangles[f];
+      for (int32_t v : {t[k], t[(k + 1) % 3]}) {
+        const glm::dvec2 in_f = layout.uv[layout.corner_wedge[3 * f + corner(t, v)]];
+        const glm::dvec2 in_g = layout.uv[layout.corner_wedge[3 * g + corner(base.mesh.triangles[g], v)]];
+        const glm::dvec2 d = in_g - quarter_turned(in_f, 2 * layout.turn[f][k]);
+        const double k0 = (d.x * b.y - d.y * b.x) / det, k1 = (a.x * d.y - a.y * d.x) / det;
+        worst = std::max({worst, std::abs(k0 - std::round(k0)), std::abs(k1 - std::round(k1))});
+      }
+    }
+  return worst;
+}
+
+TEST(SeamlessLayout, OnALatticeEverySeamContinuesByAPeriod) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  const DirectionField field = smoothest(base, 2);
+  const glm::dvec2 a(0.13, 0.0), b(0.05, 0.21);
+  const SeamlessLayout free = seamless_layout(base, field);
+  const SeamlessLayout rounded = seamless_layout(base, field, std::array<glm::dvec2, 2>{a, b});
+  EXPECT_FALSE(free.on_lattice);
+  EXPECT_TRUE(rounded.on_lattice);
+  // Left free, the seams' translations are whatever the solve gives; rounded, each is a period
+  // (a half turn's too: the layout's origin is a point the texture turns about).
+  EXPECT_GT(worst_seam_off_lattice(base, free, a, b), 0.05);
+  EXPECT_LT(worst_seam_off_lattice(base, rounded, a, b), 1e-6);
+  EXPECT_EQ(rounded.flipped_faces, 0);
+}
+
 // Plane position of every base vertex of a patch (the first copy where it is slit).
 std::map<int32_t, glm::dvec2> plane_of(const SurfacePatch& patch) {
   std::map<int32_t, glm::dvec2> result;

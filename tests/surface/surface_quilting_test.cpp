@@ -443,6 +443,8 @@ QualityBar folding_bar(QualityBar bar, double max_folded_share, double min_cover
 
 // The teapot meets the bar through the shell map; under normal displacement its open rim and
 // handle put some vertices on the far side of the nearest base sheet (signed height -0.033).
+// Its rings, on the swatch's lattice, leave more of the rim and spout bare than rings placed at
+// any phase did (coverage 0.960 against 0.978, with a third of the rejected inputs).
 // The weave is the issue's other swatch; its footprint is square, so it needs a finer scale than
 // the chain mail for 50 copies of it (55 at 0.13; 36 at 0.16).
 INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
@@ -450,7 +452,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
                                            SharedCase{"fertility.off", 0.16, folding_bar(issue_bar(), 0.05, 0.93)},
                                            SharedCase{"head.off", 0.2, {}},
                                            SharedCase{"knot2.off", 0.2, folding_bar({}, 0.05)},
-                                           SharedCase{"teapot.obj", 0.2, folding_bar({}, 0.15)},
+                                           SharedCase{"teapot.obj", 0.2, folding_bar({}, 0.15, 0.95)},
                                            SharedCase{"bunny.off", 0.13, issue_bar(), Embed::shell, true},
                                            SharedCase{"fertility.off", 0.13, folding_bar(issue_bar(), 0.13), Embed::shell, true}),
                          [](const auto& info) {

@@ -1,0 +1,156 @@
+#include "quilt/swatch_lattice.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "quilt/swatch_symmetry.h"
+
+namespace meshquilt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double cross(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+
+glm::dvec2 turned(const glm::dvec2& p, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * p.x - s * p.y, s * p.x + c * p.y};
+}
+
+// Counts the elements a map of the plane (with its turn) sends among the centroids, and of
+// those, the ones that land on an element of the same kind.
+struct MapScore {
+  int landed = 0, matched = 0;
+  bool holds() const { return landed >= 2 && matched >= 0.9 * landed; }
+};
+
+class CentroidSet {
+ public:
+  explicit CentroidSet(std::vector<ElementShape> shapes) : shapes_(std::move(shapes)) {
+    lo_ = glm::dvec2(std::numeric_limits<double>::max());
+    hi_ = -lo_;
+    double nearest = std::numeric_limits<double>::max();
+    for (size_t i = 0; i < shapes_.size(); ++i) {
+      lo_ = glm::min(lo_, shapes_[i].centre);
+      hi_ = glm::max(hi_, shapes_[i].centre);
+      for (size_t j = 0; j < i; ++j) {
+        const double d = glm::distance(shapes_[i].centre, shapes_[j].centre);
+        if (d > 0.0) nearest = std::min(nearest, d);
+      }
+    }
+    tolerance_ = nearest < std::numeric_limits<double>::max() ? 0.1 * nearest : 0.0;
+  }
+
+  const std::vector<ElementShape>& shapes() const { return shapes_; }
+  double tolerance() const { return tolerance_; }
+  glm::dvec2 middle() const { return 0.5 * (lo_ + hi_); }
+
+  MapScore score(const std::function<glm::dvec2(const glm::dvec2&)>& map, double angle) const {
+    MapScore s;
+    for (const ElementShape& shape : shapes_) {
+      const glm::dvec2 p = map(shape.centre);
+      if (p.x < lo_.x - tolerance_ || p.y < lo_.y - tolerance_ || p.x > hi_.x + tolerance_ || p.y > hi_.y + tolerance_)
+        continue;
+      ++s.landed;
+      for (const ElementShape& other : shapes_)
+        if (glm::distance(p, other.centre) <= tolerance_ && shape.matches_turned(other, angle)) {
+          ++s.matched;
+          break;
+        }
+    }
+    return s;
+  }
+
+ private:
+  std::vector<ElementShape> shapes_;
+  glm::dvec2 lo_{0.0}, hi_{0.0};
+  double tolerance_ = 0.0;
+};
+
+// The element nearest the middle: every short period maps it onto another element.
+size_t middle_element(const CentroidSet& set) {
+  size_t best = 0;
+  for (size_t i = 1; i < set.shapes().size(); ++i)
+    if (glm::distance(set.shapes()[i].centre, set.middle()) < glm::distance(set.shapes()[best].centre, set.middle()))
+      best = i;
+  return best;
+}
+
+std::optional<std::array<glm::dvec2, 2>> find_basis(const CentroidSet& set, size_t middle) {
+  const std::vector<ElementShape>& shapes = set.shapes();
+  std::vector<glm::dvec2> steps;
+  for (const ElementShape& other : shapes)
+    if (glm::distance(other.centre, shapes[middle].centre) > set.tolerance() && shapes[middle].matches_turned(other, 0.0))
+      steps.push_back(other.centre - shapes[middle].centre);
+  std::sort(steps.begin(), steps.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return glm::length(a) < glm::length(b); });
+  const int quarter = static_cast<int>(shapes.size() + 3) / 4;
+  std::optional<glm::dvec2> first;
+  for (const glm::dvec2& step : steps) {
+    if (first && std::abs(cross(*first, step)) <= 0.2 * glm::length(*first) * glm::length(step)) continue;
+    const MapScore s = set.score([&](const glm::dvec2& p) { return p + step; }, 0.0);
+    if (!s.holds() || s.matched < quarter) continue;
+    if (!first) {
+      first = step;
+      continue;
+    }
+    // The shortest period and the shortest one not parallel to it span a plane lattice.
+    return cross(*first, step) > 0.0 ? std::array<glm::dvec2, 2>{*first, step} : std::array<glm::dvec2, 2>{step, *first};
+  }
+  return std::nullopt;
+}
+
+bool on_lattice(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis, double tolerance) {
+  return glm::distance(p, nearest_period(p, basis)) <= tolerance;
+}
+
+}  // namespace
+
+glm::dvec2 nearest_period(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis) {
+  const double det = cross(basis[0], basis[1]);
+  const glm::dvec2 k(cross(p, basis[1]) / det, cross(basis[0], p) / det);
+  return std::floor(k.x + 0.5 + 1e-7) * basis[0] + std::floor(k.y + 0.5 + 1e-7) * basis[1];
+}
+
+std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symmetry) {
+  const CentroidSet set(element_shapes(swatch));
+  if (set.shapes().size() < 4 || !(set.tolerance() > 0.0)) return std::nullopt;
+  const size_t middle = middle_element(set);
+  const std::optional<std::array<glm::dvec2, 2>> basis = find_basis(set, middle);
+  if (!basis) return std::nullopt;
+  SwatchLattice lattice;
+  lattice.basis = *basis;
+  if (symmetry <= 1) return lattice;
+  const double angle = 2.0 * kPi / symmetry;
+  for (const glm::dvec2& v : lattice.basis)
+    if (!on_lattice(turned(v, angle), lattice.basis, set.tolerance())) return std::nullopt;
+  // The turn about c sends the middle element onto some element j of its kind turned, so c is
+  // where that turn leaves fixed: p_j = c + R (p_m - c).
+  const std::vector<ElementShape>& shapes = set.shapes();
+  const glm::dvec2 pm = shapes[middle].centre;
+  const double c = std::cos(angle), s = std::sin(angle);
+  // (I - R) c = p_j - R p_m; I - R is invertible for a turn other than the identity.
+  const double a11 = 1.0 - c, a12 = s, a21 = -s, a22 = 1.0 - c, det = a11 * a22 - a12 * a21;
+  int best_matched = -1;
+  double best_distance = std::numeric_limits<double>::max();
+  for (const ElementShape& other : shapes) {
+    if (!shapes[middle].matches_turned(other, angle)) continue;
+    const glm::dvec2 r = other.centre - turned(pm, angle);
+    const glm::dvec2 centre((a22 * r.x - a12 * r.y) / det, (a11 * r.y - a21 * r.x) / det);
+    const MapScore score = set.score([&](const glm::dvec2& p) { return centre + turned(p - centre, angle); }, angle);
+    if (!score.holds()) continue;
+    const double distance = glm::distance(centre, set.middle());
+    if (score.matched > best_matched || (score.matched == best_matched && distance < best_distance)) {
+      best_matched = score.matched;
+      best_distance = distance;
+      lattice.centre = centre;
+    }
+  }
+  if (best_matched < 0) return std::nullopt;
+  return lattice;
+}
+
+}  // namespace meshquilt
