@@ -334,7 +334,7 @@ std::pair<glm::dvec2, double> GeometryMatcher::refine(const std::vector<Vec3>& p
 
 MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                                    const std::vector<glm::dvec2>& candidates,
-                                   std::mt19937_64& rng) const {
+                                   std::mt19937_64& rng, bool refine) const {
   MatchResult result;
   if (points.empty()) {
     result.translation = candidates[draw_index(rng, candidates.size())];
@@ -407,8 +407,9 @@ MatchResult GeometryMatcher::match(const std::vector<Vec3>& points, const std::v
   // The minima refine independently, so they run side by side (each also spreads its points).
   std::vector<std::pair<glm::dvec2, double>> refined(minima.size());
   tbb::parallel_for(size_t{0}, minima.size(), [&](size_t k) {
-    refined[k] = refine(points, normals, factors, candidates[minima[k].second], minima[k].first,
-                        faces_of.at(minima[k].second));
+    refined[k] = refine ? this->refine(points, normals, factors, candidates[minima[k].second], minima[k].first,
+                                       faces_of.at(minima[k].second))
+                        : std::pair{candidates[minima[k].second], minima[k].first};
   });
 
   // The host decides: a seeded random pick among the near-best, as image quilting does.

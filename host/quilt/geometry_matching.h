@@ -70,10 +70,12 @@ class GeometryMatcher {
 
   //! Chooses among `candidates` (translations of the swatch on a grid of cell_size) the one
   //! minimizing Eq. 3 over the output `points` with unit `normals` (#P each), refined
-  //! continuously within one cell. With no points, a seeded random candidate.
+  //! continuously within one cell (refine false: the candidates are the only placements that
+  //! fit, as the periods of a shared surface layout are, and one of them is chosen as it is).
+  //! With no points, a seeded random candidate.
   //! \pre candidates is not empty.
   MatchResult match(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                    const std::vector<glm::dvec2>& candidates, std::mt19937_64& rng) const;
+                    const std::vector<glm::dvec2>& candidates, std::mt19937_64& rng, bool refine = true) const;
 
   //! Eq. 3 in double precision: sum over points of min over swatch faces of Eq. 1.
   double exact_cost(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,

@@ -360,6 +360,7 @@ struct MergeContext {
   const MergeOptions& merging;
   LayerCollisions& collisions;
   MergeCounts& counts;
+  bool covered_inputs_rejected = true;  // PatchRequest::reject_covered_inputs
   // Shapes before the deformation, per output element (empty: not deformed).
   std::vector<std::vector<Vec3>> undeformed;
   std::vector<uint8_t> out_partnered;  // per output element
@@ -480,7 +481,7 @@ void add_unmerged_inputs(MergeContext& ctx, const std::vector<uint8_t>& in_partn
   std::vector<TriMesh>& inputs = ctx.swatch.inputs;
   for (size_t i = 0; i < inputs.size(); ++i) {
     if (in_partnered[i]) continue;
-    bool all_overlap = true;
+    bool all_overlap = ctx.covered_inputs_rejected;
     for (const Vec3& p : inputs[i].positions) all_overlap = all_overlap && ctx.in_overlap(p);
     const Rect2 b = xy_bounds(inputs[i]);
     if (all_overlap || ctx.collisions.collides(inputs[i], -1)) {
@@ -511,7 +512,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     StageTimer timer(seconds, "match");
     std::vector<Vec3> points, normals;
     sub_patch_samples(layer, request.sub_patch, points, normals);
-    outcome.placement = matcher.match(points, normals, request.candidates, rng);
+    outcome.placement = matcher.match(points, normals, request.candidates, rng, request.refine);
   }
   check_cancel();
   const glm::dvec2 t = outcome.placement.translation;
@@ -560,7 +561,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
 
   StageTimer timer(seconds, "merge");
   LayerCollisions collisions(layer, request);
-  MergeContext ctx{layer, affected, placed_swatch, corr, in_overlap, options.merging, collisions, counts, {}, {}, {}};
+  MergeContext ctx{layer, affected, placed_swatch, corr, in_overlap, options.merging, collisions, counts,
+                   request.reject_covered_inputs, {}, {}, {}};
   keep_deformations(ctx, outs);
   ctx.representative.assign(inputs.size(), -1);
   ctx.out_partnered.assign(outs.size(), 0);

@@ -92,6 +92,13 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name = "swat
 struct PatchRequest {
   Rect2 sub_patch;                           //!< the output sub-patch around the seed
   std::vector<glm::dvec2> candidates;        //!< translations of the swatch to choose among
+  //! Refine the chosen candidate continuously; false where the candidates are the only
+  //! placements that fit (the swatch's periods in a shared surface layout).
+  bool refine = true;
+  //! Leave out an unpartnered input lying wholly over cells the output occupies. False where
+  //! the placement is exact (a shared layout's periods): there such an input fills a gap
+  //! between neighbours that occupy its cells, and the collision test keeps out duplicates.
+  bool reject_covered_inputs = true;
   PlaneGrid grid;                            //!< cells for the overlap's occupancy
   //! Whether a point of the plane lies in the output domain: inputs whose centre lies outside
   //! are not placed, and cells whose centre lies outside need no cover.

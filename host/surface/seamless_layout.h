@@ -39,7 +39,9 @@ struct SeamlessLayout {
 //! the seams' transitions as constraints (a stiff penalty: one sparse solve).
 //! lattice: the texture's periods in layout units (base units as the layout's median scale
 //! holds them), with a point it turns about at the layout's origin; the seams' translations are
-//! rounded to its periods and the layout solved again with them held.
+//! rounded to its periods and the layout solved again with them held; its median scale is then
+//! taken over faces weighted by the geometric mean of base and layout area (else by base area),
+//! so that the median element, not the median face, has the asked size.
 //! \throw SolverError when the solve fails.
 SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
                                const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt);

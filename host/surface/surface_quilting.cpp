@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <random>
 #include <unordered_map>
@@ -161,7 +162,7 @@ class SurfaceDriver {
       collect_layer(patch, layer, parts, obstacles);
     }
     PatchRequest request = make_request(patch, shrink, std::move(obstacles));
-    if (layer.empty()) phase_first_placement(patch, request);
+    place_on_lattice(patch, request);
     const size_t existing = layer.size();
     const PatchOutcome outcome =
         quilt_patch(layer, request, swatch_, setup_.matcher, setup_.step, rng_, stats_.merges, seconds_, options_.cancel);
@@ -179,15 +180,39 @@ class SurfaceDriver {
       }
   }
 
-  // A patch with nothing around it places the swatch with a point it turns about on a period of
-  // the layout's lattice (the layout's origin is one), where the layout's seams expect it.
-  void phase_first_placement(const SurfacePatch& patch, PatchRequest& request) const {
+  // On a layout whose seams continue by the swatch's periods, the pattern fits only where a
+  // point it turns about lies on a period (the layout's origin is one): a patch chooses among
+  // those placements within its candidates' range, as they are, and a patch with nothing around
+  // it starts the pattern there.
+  void place_on_lattice(const SurfacePatch& patch, PatchRequest& request) const {
     if (!lattice_ || !layout_ || !layout_->layout().on_lattice || patch.chart != PatchChart::layout_window) return;
-    glm::dvec2 middle(0.0);
-    for (const glm::dvec2& t : request.candidates) middle += t;
-    middle /= static_cast<double>(request.candidates.size());
-    const glm::dvec2 period = nearest_period(middle + patch.origin + lattice_->centre, lattice_->basis);
-    request.candidates = {period - patch.origin - lattice_->centre};
+    glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec2& t : request.candidates) {
+      lo = glm::min(lo, t);
+      hi = glm::max(hi, t);
+    }
+    const glm::dvec2 shift = patch.origin + lattice_->centre;  // t + shift must be a period
+    const std::array<glm::dvec2, 2>& b = lattice_->basis;
+    const double det = b[0].x * b[1].y - b[0].y * b[1].x;
+    // The range's corners in lattice coordinates bound the periods to try.
+    glm::dvec2 k_lo(std::numeric_limits<double>::max()), k_hi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec2& c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
+      const glm::dvec2 p = c + shift;
+      const glm::dvec2 k((p.x * b[1].y - p.y * b[1].x) / det, (b[0].x * p.y - b[0].y * p.x) / det);
+      k_lo = glm::min(k_lo, k);
+      k_hi = glm::max(k_hi, k);
+    }
+    const double slack = 1e-9 * cell_;
+    std::vector<glm::dvec2> placements;
+    for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1)
+      for (double k0 = std::ceil(k_lo.x); k0 <= k_hi.x; ++k0) {
+        const glm::dvec2 t = k0 * b[0] + k1 * b[1] - shift;
+        if (t.x >= lo.x - slack && t.y >= lo.y - slack && t.x <= hi.x + slack && t.y <= hi.y + slack) placements.push_back(t);
+      }
+    if (placements.empty()) placements.push_back(nearest_period(0.5 * (lo + hi) + shift, b) - shift);
+    request.candidates = std::move(placements);
+    request.refine = false;
+    request.reject_covered_inputs = false;
   }
 
   // A cell that a patch seeded on it did not cover is seeded again with twice the distortion

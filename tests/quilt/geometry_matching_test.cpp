@@ -389,6 +389,28 @@ TEST(GeometryMatching, LinesUpAPeriodicSwatchOffTheGrid) {
   }
 }
 
+// Without refinement the choice is one of the candidates as given: the one the output was
+// copied with, when it is among them with others off by fractions of a cell.
+TEST(GeometryMatching, UnrefinedChoiceIsACandidateAsGiven) {
+  std::mt19937_64 rng(5);
+  const TriMesh swatch = random_swatch(rng, 60);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  const double cell = 0.25;
+  const GeometryMatcher matcher(*device, swatch, cell);
+  const glm::dvec2 truth(0.37 * cell, -1.62 * cell);
+  std::vector<Vec3> points, normals;
+  copied_points(swatch, truth, &points, &normals);
+  ASSERT_GT(points.size(), 20u);
+  const std::vector<glm::dvec2> candidates = {truth + glm::dvec2(3.3 * cell, 0.0), truth, truth + glm::dvec2(0.4 * cell, 0.3 * cell)};
+  std::mt19937_64 choice(1);
+  const MatchResult unrefined = matcher.match(points, normals, candidates, choice, false);
+  EXPECT_EQ(unrefined.translation, truth);
+  // Refined from the third candidate alone, the choice moves off it.
+  std::mt19937_64 again(1);
+  const MatchResult refined = matcher.match(points, normals, {candidates[2]}, again, true);
+  EXPECT_NE(refined.translation, candidates[2]);
+}
+
 TEST(GeometryMatching, EmptySubPatchTakesASeededRandomCandidate) {
   std::mt19937_64 rng(3);
   const TriMesh swatch = random_swatch(rng, 10);

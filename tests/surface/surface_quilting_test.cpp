@@ -17,6 +17,7 @@
 
 #include "device.h"
 #include "inspect/coverage.h"
+#include "inspect/ring_links.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
@@ -24,6 +25,7 @@
 #include "shell/shell_embedding.h"
 #include "spatial/intersecting_pairs.h"
 #include "swatch/chainmail.h"
+#include "swatch/default_swatch.h"
 #include "swatch/weave.h"
 #include "support/backends.h"
 
@@ -230,14 +232,43 @@ TEST(SurfaceQuilting, ChainMailCoversTheShippedSphere) {
   EXPECT_GT(run.stats.patches, 5);
 }
 
+RingLinks links_of(const TriMesh& mesh) {
+  int32_t elements = 0;
+  for (int32_t e : mesh.elements) elements = std::max(elements, e + 1);
+  return ring_links(mesh, mesh.elements, elements);
+}
+
+// The default job: the built-in mail over the shipped sphere at 0.2 must link as a plane does.
+// Patches are windows of one layout whose seams continue by the mail's periods, placed on those
+// periods, so rings registered by different patches pass through each other all round the
+// cones (each patch with its own chart, or free seam translations: 57% and 87% linked to 3).
+TEST(SurfaceQuilting, TheDefaultMailOverTheSphereLinksAsOnAPlane) {
+  const TriMesh swatch = default_swatch();
+  const SurfaceRun run = run_surface(read_mesh(kSource / "data/sphere.off"), swatch, 0.2);
+  EXPECT_TRUE(run.stats.on_lattice);
+  const RingLinks links = links_of(run.output);
+  const RingLinks swatch_links = links_of(swatch);
+  std::printf("sphere 0.2: %d rings, linked to >= 3 %.3f, largest piece %.3f, radius / asked %.3f, rejected %d\n",
+              links.rings, links.linked_to_3_share, links.largest_piece_share,
+              links.median_radius / (swatch_links.median_radius * run.unit), run.stats.merges.rejected_inputs);
+  EXPECT_GE(links.linked_to_3_share, 0.95);
+  EXPECT_GE(links.largest_piece_share, 0.99);
+  EXPECT_LE(run.stats.merges.rejected_inputs, 0.05 * links.rings);
+  EXPECT_EQ(run.stats.dropped_elements, 0);
+  EXPECT_NEAR(links.median_radius / (swatch_links.median_radius * run.unit), 1.0, 0.05);
+}
+
 // Every change the step makes is tested in the space the output lives in, so where synthesis
 // decides in that space (displacement along normals, or the original shell map) no two elements
 // pass through each other before the clean-up pass: nothing is left for it to drop.
 TEST(SurfaceQuilting, NoElementsIntersectWhereSynthesisDecidesInOutputSpace) {
   const TriMesh swatch = make_chainmail(ChainmailOptions::small());
+  // Per-patch charts, whose seams misregister: on the shared layout the sphere's rings register
+  // exactly, and no merge would need refusing.
+  const auto per_patch = [](SurfaceQuiltOptions& options) { options.shared_layout = false; };
   for (const Embed embed : {Embed::normal, Embed::original_shell}) {
     const SurfaceRun run = run_surface(read_mesh(kSource / "data/sphere.off"), swatch, 0.3,
-                                       engine::BackendChoice::cpu, 0, {}, embed);
+                                       engine::BackendChoice::cpu, 0, {}, embed, per_patch);
     SCOPED_TRACE(embed == Embed::normal ? "normal" : "original shell map");
     EXPECT_EQ(run.stats.intersecting_face_pairs, 0);
     EXPECT_EQ(run.stats.dropped_elements, 0);
@@ -443,8 +474,8 @@ QualityBar folding_bar(QualityBar bar, double max_folded_share, double min_cover
 
 // The teapot meets the bar through the shell map; under normal displacement its open rim and
 // handle put some vertices on the far side of the nearest base sheet (signed height -0.033).
-// Its rings, on the swatch's lattice, leave more of the rim and spout bare than rings placed at
-// any phase did (coverage 0.960 against 0.978, with a third of the rejected inputs).
+// Its rings, on the swatch's lattice, leave a little more of the rim and spout bare than rings
+// placed at any phase did (coverage 0.970 against 0.978, with a third of the rejected inputs).
 // The weave is the issue's other swatch; its footprint is square, so it needs a finer scale than
 // the chain mail for 50 copies of it (55 at 0.13; 36 at 0.16).
 INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
@@ -452,7 +483,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
                                            SharedCase{"fertility.off", 0.16, folding_bar(issue_bar(), 0.05, 0.93)},
                                            SharedCase{"head.off", 0.2, {}},
                                            SharedCase{"knot2.off", 0.2, folding_bar({}, 0.05)},
-                                           SharedCase{"teapot.obj", 0.2, folding_bar({}, 0.15, 0.95)},
+                                           SharedCase{"teapot.obj", 0.2, folding_bar({}, 0.15, 0.96)},
                                            SharedCase{"bunny.off", 0.13, issue_bar(), Embed::shell, true},
                                            SharedCase{"fertility.off", 0.13, folding_bar(issue_bar(), 0.13), Embed::shell, true}),
                          [](const auto& info) {
