@@ -151,6 +151,39 @@ int32_t make_wedges(const BaseSurface& base, SeamlessLayout& layout) {
 // The layout with the seams' transitions held by a stiff penalty. Per face, with X the axis and
 // Y = normal x X: grad u along X, grad v along Y, both of one length (conformal), so the layout
 // may take whatever even scale makes the field a gradient; and, weakly, that length 1.
+// A cut edge from its lower face f (edge k, ends a and b) to g, with the layout vertices on
+// either side of each end.
+struct SeamEdge {
+  int32_t f = -1;
+  int k = 0;
+  int32_t a = -1, b = -1;
+  int32_t fa = -1, fb = -1, ga = -1, gb = -1;
+};
+
+std::vector<SeamEdge> seam_edges(const BaseSurface& base, const SeamlessLayout& layout) {
+  const TriMesh& mesh = base.mesh;
+  std::vector<SeamEdge> edges;
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Tri& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int32_t g = base.face_across[f][k];
+      if (!layout.cut[f][k] || static_cast<size_t>(g) < f) continue;
+      const Tri& tg = mesh.triangles[g];
+      SeamEdge e;
+      e.f = static_cast<int32_t>(f);
+      e.k = k;
+      e.a = t[k];
+      e.b = t[(k + 1) % 3];
+      e.fa = layout.corner_wedge[3 * f + k];
+      e.fb = layout.corner_wedge[3 * f + (k + 1) % 3];
+      e.ga = layout.corner_wedge[3 * g + corner_of(tg, e.a)];
+      e.gb = layout.corner_wedge[3 * g + corner_of(tg, e.b)];
+      edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
 // Seams whose translation is held (#F x 3, on the edges from the lower face).
 struct SeamHold {
   std::vector<std::array<glm::dvec2, 3>> translation;
@@ -197,32 +230,23 @@ void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedge
   }
   // Seams: (U_g(a) - U_g(b)) - R(-turn) (U_f(a) - U_f(b)) = 0, both coordinates.
   const double stiff = 1e10 * std::max(diagonal, 1e-300);
-  for (size_t f = 0; f < mesh.num_faces(); ++f) {
-    const Tri& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const int32_t g = base.face_across[f][k];
-      if (!layout.cut[f][k] || static_cast<size_t>(g) < f) continue;
-      const Tri& tg = mesh.triangles[g];
-      const int32_t a = t[k], b = t[(k + 1) % 3];
-      const int32_t fa = layout.corner_wedge[3 * f + k], fb = layout.corner_wedge[3 * f + (k + 1) % 3];
-      const int32_t ga = layout.corner_wedge[3 * g + corner_of(tg, a)], gb = layout.corner_wedge[3 * g + corner_of(tg, b)];
-      // R(-turn) as a 2 x 2 matrix from its action on the axes.
-      const glm::dvec2 ex = quarter_turned({1.0, 0.0}, quarter * layout.turn[f][k]);
-      const glm::dvec2 ey = quarter_turned({0.0, 1.0}, quarter * layout.turn[f][k]);
-      for (int row = 0; row < 2; ++row) {
-        if (hold && hold->held[f][k]) {
-          // U_g(x) - R U_f(x) = translation, at both ends.
-          for (const auto& [gx, fx] : {std::pair{ga, fa}, std::pair{gb, fb}})
-            add_row({{2 * gx + row, 1.0}, {2 * fx, -ex[row]}, {2 * fx + 1, -ey[row]}}, hold->translation[f][k][row], stiff);
-          continue;
-        }
-        const std::pair<int32_t, double> terms[6] = {{2 * ga + row, 1.0},         {2 * gb + row, -1.0},
-                                                     {2 * fa, -ex[row]},         {2 * fa + 1, -ey[row]},
-                                                     {2 * fb, ex[row]},          {2 * fb + 1, ey[row]}};
-        for (const auto& [i, wi] : terms)
-          for (const auto& [j, wj] : terms)
-            if (wi != 0.0 && wj != 0.0) triplets.emplace_back(i, j, stiff * wi * wj);
+  for (const SeamEdge& e : seam_edges(base, layout)) {
+    // R(-turn) as a 2 x 2 matrix from its action on the axes.
+    const glm::dvec2 ex = quarter_turned({1.0, 0.0}, quarter * layout.turn[e.f][e.k]);
+    const glm::dvec2 ey = quarter_turned({0.0, 1.0}, quarter * layout.turn[e.f][e.k]);
+    for (int row = 0; row < 2; ++row) {
+      if (hold && hold->held[e.f][e.k]) {
+        // U_g(x) - R U_f(x) = translation, at both ends.
+        for (const auto& [gx, fx] : {std::pair{e.ga, e.fa}, std::pair{e.gb, e.fb}})
+          add_row({{2 * gx + row, 1.0}, {2 * fx, -ex[row]}, {2 * fx + 1, -ey[row]}}, hold->translation[e.f][e.k][row], stiff);
+        continue;
       }
+      const std::pair<int32_t, double> terms[6] = {{2 * e.ga + row, 1.0}, {2 * e.gb + row, -1.0},
+                                                   {2 * e.fa, -ex[row]},   {2 * e.fa + 1, -ey[row]},
+                                                   {2 * e.fb, ex[row]},    {2 * e.fb + 1, ey[row]}};
+      for (const auto& [i, wi] : terms)
+        for (const auto& [j, wj] : terms)
+          if (wi != 0.0 && wj != 0.0) triplets.emplace_back(i, j, stiff * wi * wj);
     }
   }
   // Each piece's translation is free: a faint pull to the origin makes it definite.
@@ -267,39 +291,6 @@ double normalize_scale(const BaseSurface& base, SeamlessLayout& layout, bool by_
     return scale;
   }
   return 1.0;
-}
-
-// A cut edge from its lower face f (edge k, ends a and b) to g, with the layout vertices on
-// either side of each end.
-struct SeamEdge {
-  int32_t f = -1;
-  int k = 0;
-  int32_t a = -1, b = -1;
-  int32_t fa = -1, fb = -1, ga = -1, gb = -1;
-};
-
-std::vector<SeamEdge> seam_edges(const BaseSurface& base, const SeamlessLayout& layout) {
-  const TriMesh& mesh = base.mesh;
-  std::vector<SeamEdge> edges;
-  for (size_t f = 0; f < mesh.num_faces(); ++f) {
-    const Tri& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const int32_t g = base.face_across[f][k];
-      if (!layout.cut[f][k] || static_cast<size_t>(g) < f) continue;
-      const Tri& tg = mesh.triangles[g];
-      SeamEdge e;
-      e.f = static_cast<int32_t>(f);
-      e.k = k;
-      e.a = t[k];
-      e.b = t[(k + 1) % 3];
-      e.fa = layout.corner_wedge[3 * f + k];
-      e.fb = layout.corner_wedge[3 * f + (k + 1) % 3];
-      e.ga = layout.corner_wedge[3 * g + corner_of(tg, e.a)];
-      e.gb = layout.corner_wedge[3 * g + corner_of(tg, e.b)];
-      edges.push_back(e);
-    }
-  }
-  return edges;
 }
 
 // One seam: cut edges joined end to end through the same pair of layout vertices, which share
