@@ -20,14 +20,15 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   if (!stats.empty()) check_writable(stats);
   ImageSynthesisInputs in;
   in.base = prepare_base(read_mesh(base), base);
-  in.sample = read_colour_image(image);
+  if (!image.empty()) in.sample = read_colour_image(image);
   if (!field.empty()) in.constraints = read_field_file(field, in.base);
   Vec3 lo = in.base.positions.front(), hi = lo;
   for (const Vec3& p : in.base.positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * glm::length(hi - lo));
+  in.diagonal = glm::length(hi - lo);
+  in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * in.diagonal);
   return in;
 }
 

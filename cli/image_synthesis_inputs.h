@@ -15,10 +15,12 @@ struct ImageSynthesisInputs {
   ColourImage sample;
   std::vector<FieldConstraint> constraints;  //!< from the field file; empty: the default field
   double pixels_per_unit = 0.0;            //!< sample pixels per base unit
+  double diagonal = 0.0;                   //!< the base's bounding-box diagonal
 };
 
-//! Checks the output and stats paths, then reads the inputs. pixels_per_unit > 0 is taken as
-//! given; otherwise --scale S makes the sample's width S x the base's bounding-box diagonal.
+//! Checks the output and stats paths, then reads the inputs (the sample left empty when `image`
+//! is). pixels_per_unit > 0 is taken as given; otherwise --scale S makes the sample's width S x
+//! the base's bounding-box diagonal.
 //! \throw InputError for a scale outside (0, 10]; what the readers throw.
 ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
                                                  const std::string& field, double scale, double pixels_per_unit,

@@ -1,10 +1,16 @@
 // `meshquilt relief --base B --image HEIGHTS --height H -o OUT`: a relief synthesized over a base
-// from a height image (white high), as paint synthesizes colour, then the base displaced.
+// from a height image (white high), as paint synthesizes colour, then the base displaced. With
+// `--from MODEL` instead of an image, the sample is the detail of another model (Lai et al.
+// 2005): the model minus its smoothed self, over a region of it, flattened into a height image.
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 
 #include "atomic_file.h"
@@ -12,6 +18,8 @@
 #include "core/error.h"
 #include "image_synthesis_inputs.h"
 #include "mesh/mesh_io.h"
+#include "mesh/base_mesh.h"
+#include "paint/detail_extraction.h"
 #include "paint/surface_relief.h"
 
 namespace meshquilt::cli {
@@ -22,19 +30,65 @@ struct ReliefArgs {
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   ReliefOptions options;
+  // --from: the model whose detail is the sample.
+  std::string model;
+  std::vector<double> region;  // x, y, z, radius in model units
+  double smoothing = 0.0;      // model units; 0: 0.01 of its bounding-box diagonal
+  int pixels = 32;
 };
 
-void run_relief(ReliefArgs& args) {
+double diagonal_of(const TriMesh& mesh) {
+  Vec3 lo = mesh.positions.front(), hi = lo;
+  for (const Vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return glm::length(hi - lo);
+}
+
+// The model's detail over its region as the sample, sized as an image sample is (--scale or
+// --pixels-per-unit), its heights scaled as its widths are unless --height is given.
+nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, bool height_given, bool ppu_given) {
+  const TriMesh model = prepare_base(read_mesh(args.model), args.model);
+  const double model_diagonal = diagonal_of(model);
+  const double smoothing = args.smoothing > 0.0 ? args.smoothing : 0.01 * model_diagonal;
+  const std::vector<double> heights = extract_detail(model, smoothing);
+  if (!args.region.empty() && args.region.size() != 4)
+    throw InputError("--region: expected X,Y,Z,RADIUS in model units", ErrorKind::invalid_option);
+  const double radius = args.region.empty() ? 0.1 * model_diagonal : args.region[3];
+  if (!(radius > 0.0)) throw InputError("--region: expected a positive radius", ErrorKind::invalid_option);
+  const Vec3 centre = args.region.empty() ? richest_detail_centre(model, heights, radius)
+                                          : Vec3(args.region[0], args.region[1], args.region[2]);
+  const DetailImage detail = detail_image(model, heights, centre, radius, args.pixels);
+  in.sample = detail.image;
+  // As --image: the sample's width --scale x the base's diagonal; heights scale with widths.
+  if (!ppu_given) in.pixels_per_unit = args.pixels / (args.scale * in.diagonal);
+  const double size = detail.pixels_per_unit / in.pixels_per_unit;  // base units per model unit
+  if (!height_given) args.options.height = (detail.high - detail.low) * size;
+  return {{"model", args.model},
+          {"smoothing", smoothing},
+          {"region", {centre.x, centre.y, centre.z, radius}},
+          {"detail_low", detail.low},
+          {"detail_high", detail.high}};
+}
+
+void run_relief(ReliefArgs& args, bool height_given) {
   const auto start = std::chrono::steady_clock::now();
-  const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
-                                                               args.pixels_per_unit, args.output, args.stats);
+  if (args.image.empty() == args.model.empty())
+    throw InputError("relief: expected one of --image and --from", ErrorKind::invalid_option);
+  if (!args.image.empty() && !height_given)
+    throw InputError("--height: required with --image", ErrorKind::invalid_option);
+  ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
+                                                         args.pixels_per_unit, args.output, args.stats);
+  nlohmann::json from;
+  if (!args.model.empty()) from = sample_from_model(args, in, height_given, args.pixels_per_unit > 0.0);
   args.options.paint.pixels_per_unit = in.pixels_per_unit;
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options);
   write_mesh(relief.mesh, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   double highest = 0.0;
   for (double h : relief.heights) highest = std::max(highest, h);
-  const nlohmann::json summary = {{"base", args.base},
+  nlohmann::json summary = {{"base", args.base},
                                   {"image", args.image},
                                   {"output", args.output},
                                   {"pixels_per_unit", args.options.paint.pixels_per_unit},
@@ -45,6 +99,7 @@ void run_relief(ReliefArgs& args) {
                                   {"highest", highest},
                                   {"clamped_vertices", relief.clamped},
                                   {"seconds", seconds}};
+  if (!from.is_null()) summary["from"] = from;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu vertices raised by up to %g (%d clamped to their room) in %.1f s\n", args.output.c_str(),
               relief.mesh.num_vertices(), highest, relief.clamped, seconds);
@@ -57,8 +112,19 @@ void add_relief_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "relief", "Raise a relief over a base from a height image (white high), synthesized as paint does");
   cmd->add_option("--base", args->base, "base mesh (.obj .ply .off .stl)")->required();
-  cmd->add_option("--image", args->image, "heights: PGM/PBM/PPM or PNG, white high")->required();
-  cmd->add_option("--height", args->options.height, "the displacement of white, in base units")->required();
+  CLI::Option* image = cmd->add_option("--image", args->image, "heights: PGM/PBM/PPM or PNG, white high");
+  cmd->add_option("--from", args->model, "a model whose detail (it minus its smoothed self) is the sample")
+      ->excludes(image);
+  CLI::Option* height = cmd->add_option(
+      "--height", args->options.height,
+      "the displacement of white, in base units (with --from: the detail's own, scaled as its width is)");
+  cmd->add_option("--region", args->region, "with --from: X,Y,Z,RADIUS, the ball of the model sampled "
+                                            "(default: where its detail varies most, radius 0.1 of its diagonal)")
+      ->delimiter(',')
+      ->expected(4);
+  cmd->add_option("--smoothing", args->smoothing,
+                  "with --from: the smoothing length, model units (default: 0.01 of its diagonal)");
+  cmd->add_option("--pixels", args->pixels, "with --from: the sample's pixels a side")->capture_default_str();
   cmd->add_option("-o,--output", args->output, "the base refined and displaced (.ply .glb .obj .off .stl)")->required();
   cmd->add_option("--scale", args->scale, "the image's width over the base's bounding-box diagonal")
       ->capture_default_str();
@@ -71,7 +137,7 @@ void add_relief_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->options.paint.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
-  cmd->callback([args] { run_relief(*args); });
+  cmd->callback([args, height] { run_relief(*args, height->count() > 0); });
 }
 
 }  // namespace meshquilt::cli

@@ -41,6 +41,13 @@ std::vector<FacePlane> face_planes(const TriMesh& mesh) {
   return planes;
 }
 
+double half_cotangent(const TriMesh& mesh, const Tri& t, int k) {
+  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
+  const Vec3 b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
+  const double sine = glm::length(glm::cross(a, b));
+  return sine > 0.0 ? 0.5 * std::clamp(glm::dot(a, b) / sine, -1e3, 1e3) : 0.0;
+}
+
 double mean_edge_length(const TriMesh& mesh) {
   if (mesh.num_faces() == 0) return 0.0;
   double sum = 0.0;

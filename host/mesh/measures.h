@@ -13,6 +13,10 @@ namespace meshquilt {
 //! \pre indices in range.
 double mean_edge_length(const TriMesh& mesh);
 
+//! Half the cotangent of the angle at corner k of t: the cotangent Laplacian's weight of the edge
+//! opposite it, from this face. Capped at 500 either way for slivers; 0 for a degenerate corner.
+double half_cotangent(const TriMesh& mesh, const Tri& t, int k);
+
 //! Area-weighted unit vertex normals: #V, the normalized sum of the cross products (twice the
 //! areas) of the faces around each vertex; `without_area` where that sum is zero (no face, or only
 //! degenerate or cancelling ones, meet at the vertex).

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "numerics/sparse_solve.h"
 
@@ -21,14 +22,6 @@ double corner_angle(const TriMesh& mesh, const Tri& t, int k) {
   const double la = glm::length(a), lb = glm::length(b);
   if (la <= 0.0 || lb <= 0.0) return 0.0;
   return std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
-}
-
-// Half the cotangent of corner k: the weight of the edge opposite it. Slivers are capped.
-double half_cotangent(const TriMesh& mesh, const Tri& t, int k) {
-  const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
-  const Vec3 b = mesh.positions[t[(k + 2) % 3]] - mesh.positions[t[k]];
-  const double sine = glm::length(glm::cross(a, b));
-  return sine > 0.0 ? 0.5 * std::clamp(glm::dot(a, b) / sine, -1e3, 1e3) : 0.0;
 }
 
 std::vector<double> angle_defects(const TriMesh& mesh) {

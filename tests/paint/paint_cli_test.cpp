@@ -1,4 +1,5 @@
-// `meshquilt paint` and `relief` end to end: a coloured and a raised sphere, and one-line errors.
+// `meshquilt paint` and `relief` end to end: a coloured and a raised sphere, relief from a bumped
+// model, and one-line errors.
 
 #include <gtest/gtest.h>
 
@@ -6,8 +7,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "mesh/mesh_io.h"
 #include "support/run_cli.h"
+#include "support/surface_fixtures.h"
 
 namespace meshquilt {
 namespace {
@@ -79,6 +83,49 @@ TEST(ReliefCli, RaisesTheSphereAndRefusesBadInput) {
       test::run_cli("relief --base " + sphere + " --image " + (dir / "heights.pgm").string() + " --height 0 -o " + out);
   EXPECT_NE(no_height.exit_code, 0);
   EXPECT_NE(no_height.output.find("--height"), std::string::npos) << no_height.output;
+}
+
+TEST(ReliefCli, TakesItsSampleFromAModelsDetail) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_relief_from_cli";
+  std::filesystem::create_directories(dir);
+  // A sphere of radius 0.5 bumped by +-0.02.
+  TriMesh model = test::icosphere(4, 0.5);
+  for (Vec3& p : model.positions) {
+    const Vec3 u = p / std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    p = u * (0.5 + 0.02 * std::sin(20.0 * u.x) * std::sin(20.0 * u.y) * std::sin(20.0 * u.z));
+  }
+  write_mesh(model, (dir / "bumped.ply").string());
+  const std::string sphere = std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off";
+  const std::string out = (dir / "out.ply").string(), stats = (dir / "stats.json").string();
+  const test::CliResult r = test::run_cli("relief --base " + sphere + " --from " + (dir / "bumped.ply").string() +
+                                          " --smoothing 0.1 --scale 0.5 --stats " + stats + " -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(stats);
+  const nlohmann::json s = nlohmann::json::parse(in);
+  // The region's heights span the bumps' 0.04, give or take their attenuation and the sampling.
+  const double span = s["from"]["detail_high"].get<double>() - s["from"]["detail_low"].get<double>();
+  EXPECT_GT(span, 0.025);
+  EXPECT_LT(span, 0.06);
+  EXPECT_GT(s["height"].get<double>(), 0.0);
+  const TriMesh raised = read_mesh(out);
+  size_t up = 0;
+  for (const Vec3& p : raised.positions) up += std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z) > 0.5 + 0.2 * s["height"].get<double>();
+  EXPECT_GT(up, raised.num_vertices() / 10);
+
+  const test::CliResult both = test::run_cli("relief --base " + sphere + " --from " + (dir / "bumped.ply").string() +
+                                             " --image x.png -o " + out);
+  EXPECT_NE(both.exit_code, 0);
+  EXPECT_NE(both.output.find("--from"), std::string::npos) << both.output;
+  const test::CliResult missing =
+      test::run_cli("relief --base " + sphere + " --from " + (dir / "none.ply").string() + " -o " + out);
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.output.find("none.ply"), std::string::npos) << missing.output;
+  const test::CliResult region = test::run_cli("relief --base " + sphere + " --from " + (dir / "bumped.ply").string() +
+                                               " --region 0,0,0.5,-1 -o " + out);
+  EXPECT_NE(region.exit_code, 0);
+  EXPECT_NE(region.output.find("--region"), std::string::npos) << region.output;
+  // The good output is left as it was.
+  EXPECT_EQ(read_mesh(out).num_vertices(), raised.num_vertices());
 }
 
 }  // namespace
