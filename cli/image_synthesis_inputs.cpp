@@ -1,11 +1,11 @@
 #include "image_synthesis_inputs.h"
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "atomic_file.h"
 #include "core/error.h"
 #include "mesh/base_mesh.h"
+#include "mesh/measures.h"
 #include "mesh/mesh_io.h"
 
 namespace meshquilt::cli {
@@ -22,12 +22,7 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   in.base = prepare_base(read_mesh(base), base);
   if (!image.empty()) in.sample = read_colour_image(image);
   if (!field.empty()) in.constraints = read_field_file(field, in.base);
-  Vec3 lo = in.base.positions.front(), hi = lo;
-  for (const Vec3& p : in.base.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  in.diagonal = glm::length(hi - lo);
+  in.diagonal = glm::length(bounding_box(in.base.positions).extent());
   in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * in.diagonal);
   return in;
 }

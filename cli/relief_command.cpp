@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 
@@ -19,6 +18,7 @@
 #include "image_synthesis_inputs.h"
 #include "mesh/mesh_io.h"
 #include "mesh/base_mesh.h"
+#include "mesh/measures.h"
 #include "paint/detail_extraction.h"
 #include "paint/surface_relief.h"
 
@@ -37,20 +37,11 @@ struct ReliefArgs {
   int pixels = 32;
 };
 
-double diagonal_of(const TriMesh& mesh) {
-  Vec3 lo = mesh.positions.front(), hi = lo;
-  for (const Vec3& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  return glm::length(hi - lo);
-}
-
 // The model's detail over its region as the sample, sized as an image sample is (--scale or
 // --pixels-per-unit), its heights scaled as its widths are unless --height is given.
 nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, bool height_given, bool ppu_given) {
   const TriMesh model = prepare_base(read_mesh(args.model), args.model);
-  const double model_diagonal = diagonal_of(model);
+  const double model_diagonal = glm::length(bounding_box(model.positions).extent());
   const double smoothing = args.smoothing > 0.0 ? args.smoothing : 0.01 * model_diagonal;
   const std::vector<double> heights = extract_detail(model, smoothing);
   if (!args.region.empty() && args.region.size() != 4)

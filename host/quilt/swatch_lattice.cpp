@@ -109,9 +109,13 @@ bool on_lattice(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis, dou
 
 }  // namespace
 
-glm::dvec2 nearest_period(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis) {
+glm::dvec2 lattice_coordinates(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis) {
   const double det = cross(basis[0], basis[1]);
-  const glm::dvec2 k(cross(p, basis[1]) / det, cross(basis[0], p) / det);
+  return {cross(p, basis[1]) / det, cross(basis[0], p) / det};
+}
+
+glm::dvec2 nearest_period(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis) {
+  const glm::dvec2 k = lattice_coordinates(p, basis);
   return std::floor(k.x + 0.5 + 1e-7) * basis[0] + std::floor(k.y + 0.5 + 1e-7) * basis[1];
 }
 

@@ -25,6 +25,9 @@ struct SwatchLattice {
 //! turn must map the lattice onto itself. Empty otherwise (a weave's yarns, scattered fruit).
 std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symmetry);
 
+//! p in the lattice's coordinates: p = k.x basis[0] + k.y basis[1].
+glm::dvec2 lattice_coordinates(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis);
+
 //! The period of the lattice `basis` nearest to p. A point halfway between two periods (as on a
 //! symmetric base) goes to the upper one by a margin above rounding noise, so that it goes the
 //! same way whatever the floating-point environment.

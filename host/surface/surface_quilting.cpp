@@ -193,12 +193,10 @@ class SurfaceDriver {
     }
     const glm::dvec2 shift = patch.origin + lattice_->centre;  // t + shift must be a period
     const std::array<glm::dvec2, 2>& b = lattice_->basis;
-    const double det = b[0].x * b[1].y - b[0].y * b[1].x;
     // The range's corners in lattice coordinates bound the periods to try.
     glm::dvec2 k_lo(std::numeric_limits<double>::max()), k_hi(std::numeric_limits<double>::lowest());
     for (const glm::dvec2& c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
-      const glm::dvec2 p = c + shift;
-      const glm::dvec2 k((p.x * b[1].y - p.y * b[1].x) / det, (b[0].x * p.y - b[0].y * p.x) / det);
+      const glm::dvec2 k = lattice_coordinates(c + shift, b);
       k_lo = glm::min(k_lo, k);
       k_hi = glm::max(k_hi, k);
     }
