@@ -338,6 +338,91 @@ void slit_open(SurfacePatch& patch, const std::vector<glm::dvec2>& corner_uv, do
   }
 }
 
+// Whether two plane triangles' interiors overlap by more than `slack` (separating axes).
+bool triangles_overlap(const std::array<glm::dvec2, 3>& a, const std::array<glm::dvec2, 3>& b, double slack) {
+  for (const auto* tri : {&a, &b})
+    for (int e = 0; e < 3; ++e) {
+      const glm::dvec2 d = (*tri)[(e + 1) % 3] - (*tri)[e];
+      const glm::dvec2 axis(-d.y, d.x);
+      const double len = glm::length(axis);
+      if (!(len > 0.0)) continue;
+      double alo = 1e300, ahi = -1e300, blo = 1e300, bhi = -1e300;
+      for (const glm::dvec2& p : a) { const double x = glm::dot(p, axis) / len; alo = std::min(alo, x); ahi = std::max(ahi, x); }
+      for (const glm::dvec2& p : b) { const double x = glm::dot(p, axis) / len; blo = std::min(blo, x); bhi = std::max(bhi, x); }
+      if (ahi <= blo + slack || bhi <= alo + slack) return false;
+    }
+  return true;
+}
+
+// Of each two faces of the patch whose plane images overlap and share no base vertex, the one
+// farther from `origin` in space: round a cone of negative index, or over a fold of the base, a
+// window wraps over itself, and a point there would stand for two places.
+std::vector<uint8_t> overlapping_faces(const SurfacePatch& patch, const TriMesh& mesh, const Vec3& origin) {
+  const size_t n = patch.faces.size();
+  std::vector<uint8_t> result(n, 0);
+  if (n == 0) return result;
+  const auto distance = [&](int32_t f) {
+    const Tri& t = mesh.triangles[patch.faces[f]];
+    return glm::distance(origin, (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0);
+  };
+  std::vector<std::array<glm::dvec2, 3>> tri(n);
+  glm::dvec2 lo(1e300), hi(-1e300);
+  double edge = 0.0;
+  for (size_t f = 0; f < n; ++f) {
+    for (int c = 0; c < 3; ++c) {
+      tri[f][c] = patch.uv[patch.local_vertex_of_face_[3 * f + c]];
+      lo = glm::min(lo, tri[f][c]);
+      hi = glm::max(hi, tri[f][c]);
+    }
+    edge += glm::length(tri[f][1] - tri[f][0]);
+  }
+  edge = std::max(edge / n, 1e-300);
+  const double cell = 2.0 * edge;
+  const int nx = std::max(1, std::min(1024, static_cast<int>((hi.x - lo.x) / cell) + 1));
+  const int ny = std::max(1, std::min(1024, static_cast<int>((hi.y - lo.y) / cell) + 1));
+  std::vector<std::vector<int32_t>> grid(static_cast<size_t>(nx) * ny);
+  const auto column = [&](double x) { return std::clamp(static_cast<int>((x - lo.x) / cell), 0, nx - 1); };
+  const auto row = [&](double y) { return std::clamp(static_cast<int>((y - lo.y) / cell), 0, ny - 1); };
+  std::vector<glm::dvec2> box_lo(n), box_hi(n);
+  for (size_t f = 0; f < n; ++f) {
+    box_lo[f] = glm::min(glm::min(tri[f][0], tri[f][1]), tri[f][2]);
+    box_hi[f] = glm::max(glm::max(tri[f][0], tri[f][1]), tri[f][2]);
+    for (int y = row(box_lo[f].y); y <= row(box_hi[f].y); ++y)
+      for (int x = column(box_lo[f].x); x <= column(box_hi[f].x); ++x)
+        grid[static_cast<size_t>(y) * nx + x].push_back(static_cast<int32_t>(f));
+  }
+  for (size_t cell_index = 0; cell_index < grid.size(); ++cell_index) {
+    const std::vector<int32_t>& bucket = grid[cell_index];
+    for (size_t i = 0; i < bucket.size(); ++i)
+      for (size_t j = i + 1; j < bucket.size(); ++j) {
+        const int32_t f = bucket[i], g = bucket[j];
+        const glm::dvec2 lo_both = glm::max(box_lo[f], box_lo[g]), hi_both = glm::min(box_hi[f], box_hi[g]);
+        if (lo_both.x >= hi_both.x || lo_both.y >= hi_both.y) continue;
+        // Each pair once: in the cell holding the lower corner of their boxes' intersection.
+        if (static_cast<size_t>(row(lo_both.y)) * nx + column(lo_both.x) != cell_index) continue;
+        const Tri& tf = mesh.triangles[patch.faces[f]];
+        const Tri& tg = mesh.triangles[patch.faces[g]];
+        bool shared = false;
+        for (int32_t v : tf) shared = shared || v == tg[0] || v == tg[1] || v == tg[2];
+        if (shared || !triangles_overlap(tri[f], tri[g], 1e-3 * edge)) continue;
+        result[distance(f) > distance(g) ? f : g] = 1;
+      }
+  }
+  return result;
+}
+
+// The faces of `faces` (sorted) reached from `start` across edges between them, sorted.
+std::vector<int32_t> connected_within(const BaseSurface& base, const std::vector<int32_t>& faces, int32_t start) {
+  std::unordered_set<int32_t> left(faces.begin(), faces.end());
+  std::vector<int32_t> result{start};
+  left.erase(start);
+  for (size_t next = 0; next < result.size(); ++next)
+    for (int32_t g : base.face_across[result[next]])
+      if (g >= 0 && left.erase(g) > 0) result.push_back(g);
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
 // The patch over `faces` (sorted), with its local vertices; no plane yet.
 void set_faces(const TriMesh& mesh, SurfacePatch& patch, const std::vector<int32_t>& faces) {
   patch.faces = faces;
@@ -417,40 +502,61 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   // chart of the patch alone (the layout's field, combed over the window) where that does not
   // fold; the conformal map, scaled to the patch's area, otherwise and where no layout is given.
   if (layout) {
-    const LayoutWindow window =
-        layout->unfold(faces, seed.face, patch.local_vertex_of_face_, static_cast<int32_t>(patch.vertices.size()));
-    SurfacePatch slit = patch;
-    slit_open(slit, window.corner_uv, 1e-6 * radius);
-    measure_distortion(base, slit, 1.0);
-    // The layout may fold a face or two round a cone: the window leaves them out (a point over
-    // them goes to the nearest face) rather than give up the shared layout for the whole patch.
-    // Unfolded without them, the window may reach round the cone the other way and fold another.
+    // Where the layout folds the seed's own face, the window starts from the nearest face it
+    // does not: a window needs its start face.
+    SurfacePoint anchor = seed;
+    const auto window_over = [&](const std::vector<int32_t>& window_faces) {
+      SurfacePatch window;
+      window.radius = radius;
+      set_faces(mesh, window, window_faces);
+      const LayoutWindow unfolded = layout->unfold(window_faces, anchor.face, window.local_vertex_of_face_,
+                                                   static_cast<int32_t>(window.vertices.size()));
+      slit_open(window, unfolded.corner_uv, 1e-6 * radius);
+      measure_distortion(base, window, 1.0);
+      return window;
+    };
+    SurfacePatch slit = window_over(faces);
+    // The layout may fold a face or two round a cone, and a window round a cone of negative index
+    // wraps over itself: the window leaves out the faces folded, and the farther of two that
+    // overlap (a point over them goes to the nearest face), rather than give up the shared layout
+    // for the whole patch. Unfolded without them, it may reach round the cone the other way.
     const int most = std::max<int>(1, static_cast<int>(faces.size()) / 50);
-    std::vector<int32_t> unfolded = faces;
-    for (int round = 0; round < 3 && slit.flipped_faces > 0 && slit.flipped_faces <= most; ++round) {
-      std::vector<int32_t> kept_faces;
-      for (size_t k = 0; k < unfolded.size(); ++k) {
-        const int32_t* v = &slit.local_vertex_of_face_[3 * k];
-        if (unfolded[k] == seed.face || cross2(slit.uv[v[1]] - slit.uv[v[0]], slit.uv[v[2]] - slit.uv[v[0]]) > 0.0)
-          kept_faces.push_back(unfolded[k]);
+    for (int round = 0; round < 4 && slit.flipped_faces <= most; ++round) {
+      std::vector<uint8_t> left_out(slit.faces.size(), 0);
+      if (slit.flipped_faces > 0) {
+        for (size_t k = 0; k < slit.faces.size(); ++k) {
+          const int32_t* v = &slit.local_vertex_of_face_[3 * k];
+          left_out[k] = cross2(slit.uv[v[1]] - slit.uv[v[0]], slit.uv[v[2]] - slit.uv[v[0]]) <= 0.0;
+        }
+        const size_t at = static_cast<size_t>(slit.face_index(anchor.face));
+        if (left_out[at]) {
+          double nearest = std::numeric_limits<double>::max();
+          for (size_t k = 0; k < slit.faces.size(); ++k) {
+            const double d = glm::distance(origin, base.position({slit.faces[k], glm::dvec2(1.0 / 3.0)}));
+            if (left_out[k] || d >= nearest) continue;
+            nearest = d;
+            anchor = {slit.faces[k], glm::dvec2(1.0 / 3.0)};
+          }
+          if (anchor.face == seed.face) break;
+        }
+      } else {
+        left_out = overlapping_faces(slit, mesh, origin);
       }
-      unfolded = std::move(kept_faces);
-      SurfacePatch kept;
-      kept.radius = radius;
-      set_faces(mesh, kept, unfolded);
-      const LayoutWindow again =
-          layout->unfold(unfolded, seed.face, kept.local_vertex_of_face_, static_cast<int32_t>(kept.vertices.size()));
-      slit_open(kept, again.corner_uv, 1e-6 * radius);
-      measure_distortion(base, kept, 1.0);
-      slit = std::move(kept);
+      std::vector<int32_t> kept_faces;
+      for (size_t k = 0; k < slit.faces.size(); ++k)
+        if (!left_out[k] || slit.faces[k] == anchor.face) kept_faces.push_back(slit.faces[k]);
+      if (kept_faces.size() == slit.faces.size()) break;
+      slit = window_over(connected_within(base, kept_faces, anchor.face));
     }
     if (slit.flipped_faces == 0) {
       // The layout's scale changes over a window as it does over every window round it: a
       // smaller window would change nothing.
       slit.area_distortion = 1.0;
       slit.chart = PatchChart::layout_window;
-      return centred(slit, seed);
+      return centred(slit, anchor);
     }
+    const LayoutWindow window =
+        layout->unfold(faces, seed.face, patch.local_vertex_of_face_, static_cast<int32_t>(patch.vertices.size()));
     std::vector<Vec3> face_field(mesh.num_faces(), Vec3(0.0));
     for (size_t k = 0; k < faces.size(); ++k) {
       Vec3 d = layout->axis(faces[k]);

@@ -178,6 +178,12 @@ class SurfaceDriver {
         seeds_.mark_processed(c);
         processed_area_ += cells_.areas[c];
       }
+    // A window that starts beside a seed the layout folds leaves the seed's face out: the patch
+    // around it is all that can be placed there.
+    if (patch.face_index(seed.face) < 0 && !seeds_.processed(seed_cell)) {
+      seeds_.mark_processed(seed_cell);
+      processed_area_ += cells_.areas[seed_cell];
+    }
   }
 
   // On a layout whose seams continue by the swatch's periods, the pattern fits only where a

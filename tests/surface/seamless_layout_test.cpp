@@ -192,6 +192,63 @@ TEST(SeamlessLayout, OverlappingWindowsDifferByASymmetryTurnAndATranslation) {
   EXPECT_GE(compared, 5);
 }
 
+// Whether a point lies inside a plane triangle by more than `margin` of its barycentrics.
+bool strictly_inside(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, double margin) {
+  const double area = test::signed_area2(a, b, c);
+  if (area == 0.0) return false;
+  const double u = test::signed_area2(p, b, c) / area, v = test::signed_area2(a, p, c) / area;
+  return u > margin && v > margin && 1.0 - u - v > margin;
+}
+
+TEST(SeamlessLayout, AWindowRoundANegativeConeDoesNotWrapOverItself) {
+  // A drawn field turning once backwards round the middle of a flat square: a cone of index -1,
+  // round which the layout spans 4 pi.
+  const TriMesh grid = test::flat_grid(40, 40, 0.05);
+  const BaseSurface base(grid);
+  const glm::dvec2 middle(1.0, 1.0);
+  std::vector<Vec3> target(grid.num_faces());
+  for (size_t f = 0; f < grid.num_faces(); ++f) {
+    const Vec3 c = base.position({static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)});
+    const double angle = -std::atan2(c.y - middle.y, c.x - middle.x);
+    target[f] = Vec3(std::cos(angle), std::sin(angle), 0.0);
+  }
+  const BaseLayout layout(base, 1, target, std::vector<double>(target.size(), guided_field_weight(base)), true);
+  ASSERT_GE(layout.cones(), 1);
+  int windows = 0;
+  for (const glm::dvec2 seed : {glm::dvec2(0.913, 0.962), glm::dvec2(1.118, 1.031), glm::dvec2(1.012, 0.874)}) {
+    // The grid's face holding the seed: cell (i, j), either half.
+    int32_t face = -1;
+    glm::dvec2 bary(0.0);
+    for (size_t f = 0; f < grid.num_faces() && face < 0; ++f) {
+      const Tri& t = grid.triangles[f];
+      const glm::dvec2 a(grid.positions[t[0]]), b(grid.positions[t[1]]), c(grid.positions[t[2]]);
+      if (!strictly_inside(seed, a, b, c, 0.0)) continue;
+      const double area = test::signed_area2(a, b, c);
+      face = static_cast<int32_t>(f);
+      bary = glm::dvec2(test::signed_area2(a, seed, c) / area, test::signed_area2(a, b, seed) / area);
+    }
+    ASSERT_GE(face, 0);
+    const SurfacePatch patch = grow_conformal_patch(base, {face, bary}, 0.4, nullptr, &layout);
+    if (patch.chart != PatchChart::layout_window) continue;
+    ++windows;
+    // No face's centre lies inside another face that shares no vertex with it.
+    int overlaps = 0;
+    for (size_t f = 0; f < patch.faces.size(); ++f) {
+      const int32_t* vf = &patch.local_vertex_of_face_[3 * f];
+      const glm::dvec2 centre = (patch.uv[vf[0]] + patch.uv[vf[1]] + patch.uv[vf[2]]) / 3.0;
+      const Tri& tf = grid.triangles[patch.faces[f]];
+      for (size_t g = 0; g < patch.faces.size(); ++g) {
+        const Tri& tg = grid.triangles[patch.faces[g]];
+        if (std::find_first_of(tf.begin(), tf.end(), tg.begin(), tg.end()) != tf.end()) continue;
+        const int32_t* vg = &patch.local_vertex_of_face_[3 * g];
+        overlaps += strictly_inside(centre, patch.uv[vg[0]], patch.uv[vg[1]], patch.uv[vg[2]], 1e-6);
+      }
+    }
+    EXPECT_EQ(overlaps, 0) << "window at " << seed.x << ", " << seed.y << " of " << patch.faces.size() << " faces";
+  }
+  EXPECT_GE(windows, 2);
+}
+
 TEST(BaseLayout, SplitFacesKeepTheSurfaceAndNumberThePartsOfEachFace) {
   const TriMesh sphere = test::icosphere(1);
   const TriMesh split = split_faces(sphere, 2);

@@ -258,6 +258,31 @@ TEST(SurfaceQuilting, TheDefaultMailOverTheSphereLinksAsOnAPlane) {
   EXPECT_NEAR(links.median_radius / (swatch_links.median_radius * run.unit), 1.0, 0.05);
 }
 
+// Over scanned bases whose layouts hold cones of negative index (saddles between the bunny's
+// ears, fertility's handles), a window that wrapped over itself round one placed rings of one
+// sheet over those of the other, and refused them as collisions.
+class ScannedBaseLinks : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ScannedBaseLinks, TheDefaultMailLinksAsOnAPlane) {
+  const auto file = kShared / "data/meshes" / GetParam();
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  const TriMesh swatch = default_swatch();
+  const SurfaceRun run = run_surface(read_mesh(file), swatch, 0.14);
+  const RingLinks links = links_of(run.output);
+  const double radius = links.median_radius / (links_of(swatch).median_radius * run.unit);
+  std::printf("%s 0.14: %d rings, linked to >= 3 %.3f, largest piece %.3f, radius / asked %.3f, rejected %d\n",
+              GetParam(), links.rings, links.linked_to_3_share, links.largest_piece_share, radius,
+              run.stats.merges.rejected_inputs);
+  EXPECT_GE(links.linked_to_3_share, 0.85);
+  EXPECT_GE(links.largest_piece_share, 0.95);
+  EXPECT_LE(run.stats.merges.rejected_inputs, 0.05 * links.rings);
+  EXPECT_EQ(run.stats.intersecting_face_pairs, 0);
+  EXPECT_NEAR(radius, 1.0, 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bases, ScannedBaseLinks, ::testing::Values("bunny.off", "fertility.off"),
+                         [](const auto& info) { return std::string(info.param).substr(0, std::string(info.param).find('.')); });
+
 // Every change the step makes is tested in the space the output lives in, so where synthesis
 // decides in that space (displacement along normals, or the original shell map) no two elements
 // pass through each other before the clean-up pass: nothing is left for it to drop.
