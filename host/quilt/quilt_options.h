@@ -49,7 +49,7 @@ struct QuiltStats {
   int dropped_folded = 0;        //!< passed through themselves although the swatch's elements do not
   int cut_swatch_elements = 0;   //!< swatch elements cut open by its border, left out (prepare_swatch)
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
-  int joined_elements = 0;       //!< planar: elements joined into one they met face to face
+  int joined_elements = 0;       //!< elements joined into one they met face to face
   int cells = 0;
   double cell_size = 0.0;
   int holes = 0;                  //!< connected groups of cells left uncovered after seed_attempts patches

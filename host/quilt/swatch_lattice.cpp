@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "quilt/swatch_symmetry.h"
+#include "spatial/face_bvh.h"
 
 namespace meshquilt {
 namespace {
@@ -71,6 +72,46 @@ class CentroidSet {
   double tolerance_ = 0.0;
 };
 
+// Points of the swatch's surface, and whether a map of the plane (z kept) puts them back on it:
+// a yarn moved by a period lies along another yarn, not on its centroid, so a weave's periods
+// show in its surface only.
+class SurfaceSamples {
+ public:
+  explicit SurfaceSamples(const QuiltSwatch& swatch) : bvh_(swatch.mesh) {
+    const size_t n = swatch.mesh.positions.size();
+    const size_t stride = std::max<size_t>(1, n / 3000);
+    lo_ = glm::dvec2(std::numeric_limits<double>::max());
+    hi_ = -lo_;
+    for (const Vec3& p : swatch.mesh.positions) {
+      lo_ = glm::min(lo_, glm::dvec2(p));
+      hi_ = glm::max(hi_, glm::dvec2(p));
+    }
+    for (size_t i = 0; i < n; i += stride) points_.push_back(swatch.mesh.positions[i]);
+    tolerance_ = 0.05 * swatch.mean_edge;
+    // Elements end at the border, in caps or cut ends that the pattern inside has not.
+    margin_ = 2.0 * swatch.mean_edge;
+  }
+
+  size_t size() const { return points_.size(); }
+
+  MapScore score(const std::function<glm::dvec2(const glm::dvec2&)>& map) const {
+    MapScore s;
+    for (const Vec3& p : points_) {
+      const glm::dvec2 q = map(glm::dvec2(p));
+      if (q.x < lo_.x + margin_ || q.y < lo_.y + margin_ || q.x > hi_.x - margin_ || q.y > hi_.y - margin_) continue;
+      ++s.landed;
+      if (bvh_.closest_point(Vec3(q, p.z), tolerance_).face >= 0) ++s.matched;
+    }
+    return s;
+  }
+
+ private:
+  FaceBvh bvh_;
+  std::vector<Vec3> points_;
+  glm::dvec2 lo_{0.0}, hi_{0.0};
+  double tolerance_ = 0.0, margin_ = 0.0;
+};
+
 // The element nearest the middle: every short period maps it onto another element.
 size_t middle_element(const CentroidSet& set) {
   size_t best = 0;
@@ -107,6 +148,73 @@ bool on_lattice(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis, dou
   return glm::distance(p, nearest_period(p, basis)) <= tolerance;
 }
 
+// The point a turn through `angle` leaves fixed when it sends `from` to `to`:
+// (I - R) c = to - R from, invertible for a turn other than the identity.
+glm::dvec2 turn_centre(const glm::dvec2& from, const glm::dvec2& to, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  const double a11 = 1.0 - c, a12 = s, a21 = -s, a22 = 1.0 - c, det = a11 * a22 - a12 * a21;
+  const glm::dvec2 r = to - turned(from, angle);
+  return {(a22 * r.x - a12 * r.y) / det, (a11 * r.y - a21 * r.x) / det};
+}
+
+// Where the centroids show no lattice (yarns): periods among the steps between centroids of
+// elements of one kind, and turn centres among the points that turn one element onto another of
+// its kind, each checked on the surface.
+std::optional<SwatchLattice> surface_lattice(const QuiltSwatch& swatch, const CentroidSet& set, int symmetry) {
+  const std::vector<ElementShape>& shapes = set.shapes();
+  const SurfaceSamples samples(swatch);
+  const auto holds = [&](const MapScore& score) {
+    return score.matched >= 0.9 * score.landed && 4 * static_cast<size_t>(score.landed) >= samples.size();
+  };
+  std::vector<glm::dvec2> steps;
+  for (const ElementShape& a : shapes)
+    for (const ElementShape& b : shapes) {
+      const glm::dvec2 step = b.centre - a.centre;
+      if (glm::length(step) <= set.tolerance() || !a.matches_turned(b, 0.0)) continue;
+      if (std::none_of(steps.begin(), steps.end(), [&](const glm::dvec2& known) { return glm::distance(known, step) <= set.tolerance(); }))
+        steps.push_back(step);
+    }
+  std::sort(steps.begin(), steps.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return glm::length(a) < glm::length(b); });
+  std::optional<glm::dvec2> first;
+  std::optional<SwatchLattice> lattice;
+  for (const glm::dvec2& step : steps) {
+    if (first && std::abs(cross(*first, step)) <= 0.2 * glm::length(*first) * glm::length(step)) continue;
+    if (!holds(samples.score([&](const glm::dvec2& p) { return p + step; }))) continue;
+    if (!first) {
+      first = step;
+      continue;
+    }
+    lattice = SwatchLattice{};
+    lattice->basis = cross(*first, step) > 0.0 ? std::array<glm::dvec2, 2>{*first, step} : std::array<glm::dvec2, 2>{step, *first};
+    break;
+  }
+  if (!lattice || symmetry <= 1) return lattice;
+  const double angle = 2.0 * kPi / symmetry;
+  for (const glm::dvec2& v : lattice->basis)
+    if (!on_lattice(turned(v, angle), lattice->basis, set.tolerance())) return std::nullopt;
+  int best_matched = -1;
+  double best_distance = std::numeric_limits<double>::max();
+  std::vector<glm::dvec2> tried;
+  for (const ElementShape& a : shapes)
+    for (const ElementShape& b : shapes) {
+      if (!a.matches_turned(b, angle)) continue;
+      const glm::dvec2 centre = turn_centre(a.centre, b.centre, angle);
+      if (std::any_of(tried.begin(), tried.end(), [&](const glm::dvec2& c) { return glm::distance(c, centre) <= set.tolerance(); }))
+        continue;
+      tried.push_back(centre);
+      const MapScore score = samples.score([&](const glm::dvec2& p) { return centre + turned(p - centre, angle); });
+      if (!holds(score)) continue;
+      const double distance = glm::distance(centre, set.middle());
+      if (score.matched > best_matched || (score.matched == best_matched && distance < best_distance)) {
+        best_matched = score.matched;
+        best_distance = distance;
+        lattice->centre = centre;
+      }
+    }
+  if (best_matched < 0) return std::nullopt;
+  return lattice;
+}
+
 }  // namespace
 
 glm::dvec2 lattice_coordinates(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis) {
@@ -124,7 +232,7 @@ std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symme
   if (set.shapes().size() < 4 || !(set.tolerance() > 0.0)) return std::nullopt;
   const size_t middle = middle_element(set);
   const std::optional<std::array<glm::dvec2, 2>> basis = find_basis(set, middle);
-  if (!basis) return std::nullopt;
+  if (!basis) return surface_lattice(swatch, set, symmetry);
   SwatchLattice lattice;
   lattice.basis = *basis;
   if (symmetry <= 1) return lattice;

@@ -20,9 +20,11 @@ struct SwatchLattice {
 
 //! The lattice of the swatch's element centroids, when the pattern repeats along two directions:
 //! a period maps at least 90% of the elements whose translate lies among the centroids onto an
-//! element of the same kind (ElementShape), and does so for at least a quarter of them. With
-//! symmetry > 1, the pattern must also turn through 2 pi / symmetry about some centre, and the
-//! turn must map the lattice onto itself. Empty otherwise (a weave's yarns, scattered fruit).
+//! element of the same kind (ElementShape), and does so for at least a quarter of them. Where the
+//! centroids show none (a yarn moved by a period lies along another, not on its centroid), the
+//! steps between centroids of one kind that put at least 90% of sampled surface points back on
+//! the surface. With symmetry > 1, the pattern must also turn through 2 pi / symmetry about some
+//! centre, and the turn must map the lattice onto itself. Empty otherwise (scattered fruit).
 std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symmetry);
 
 //! p in the lattice's coordinates: p = k.x basis[0] + k.y basis[1].

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
+#include "quilt/merging/abutting_elements.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
 #include "quilt/swatch_lattice.h"
@@ -308,14 +309,21 @@ class SurfaceDriver {
     }
   }
 
-  // The faces of an element outside its part, in space.
+  // The faces of an element outside its part, in space, less those at the seam: they touch the
+  // part at its pinned vertices, and as an obstacle would refuse every change to it there.
   TriMesh rest_in_space(SurfaceElement& element, const ElementPart& part) const {
     if (element.in_space.empty())
       for (const LocalVertex& lv : element.vertices)
         element.in_space.push_back(embedding_->position_during_synthesis(lv.point, lv.height));
+    std::vector<uint8_t> on_part(element.vertices.size(), 0);
+    for (size_t f = 0; f < element.triangles.size(); ++f)
+      if (part.face_in_part[f])
+        for (int32_t v : element.triangles[f]) on_part[v] = 1;
     TriMesh rest;
     for (size_t f = 0; f < element.triangles.size(); ++f) {
       if (part.face_in_part[f]) continue;
+      const Tri& t = element.triangles[f];
+      if (on_part[t[0]] || on_part[t[1]] || on_part[t[2]]) continue;
       const int32_t first = static_cast<int32_t>(rest.positions.size());
       for (int32_t v : element.triangles[f]) rest.positions.push_back(element.in_space[v]);
       rest.triangles.push_back({first, first + 1, first + 2});
@@ -492,6 +500,21 @@ class SurfaceDriver {
     stats_.covered_area = processed_area_ - stats_.hole_area;
     for (size_t e = 0; e < elements_.size(); ++e)
       if (alive_[e]) result.local.insert(result.local.end(), elements_[e].vertices.begin(), elements_[e].vertices.end());
+    if (options_.cleanup) {
+      // Windows on the swatch's periods place a yarn's copies end to end, cap on cap.
+      StageTimer timer(seconds_, "cleanup");
+      std::vector<int32_t> kept;
+      stats_.joined_elements = join_abutting_elements(result.mesh, kWeldTolerance, &kept);
+      if (stats_.joined_elements > 0) {
+        std::vector<LocalVertex> local;
+        local.reserve(kept.size());
+        for (int32_t v : kept) local.push_back(result.local[v]);
+        result.local = std::move(local);
+        // A joined yarn is one element to the map that places it, as to `embed` after it.
+        if (embedding_->has_synthesis_map())
+          result.mesh.positions = place_elements(*embedding_, result.local, result.mesh.triangles, result.mesh.elements).positions;
+      }
+    }
     return result;
   }
 

@@ -168,5 +168,41 @@ TEST(SwatchLattice, TheBuiltInChainMailRepeatsOnItsRings) {
   }
 }
 
+// A yarn moved by a period lies along another yarn: the periods show in the surface, checked here
+// vertex by vertex against the swatch's own vertices (its mesh repeats exactly).
+TEST(SwatchLattice, ThePlainWeaveRepeatsAlongAndAcrossItsYarns) {
+  const QuiltSwatch swatch = prepare_swatch(make_weave(WeaveOptions{}));
+  const std::optional<SwatchLattice> lattice = swatch_lattice(swatch, 2);
+  ASSERT_TRUE(lattice.has_value());
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const Vec3& p : swatch.mesh.positions) {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+  }
+  const double margin = 3.0 * swatch.mean_edge, tolerance = 1e-6 * glm::length(hi - lo);
+  const auto maps_onto_itself = [&](const auto& map) {
+    int landed = 0, matched = 0;
+    for (size_t i = 0; i < swatch.mesh.positions.size(); i += 7) {
+      const Vec3& p = swatch.mesh.positions[i];
+      const glm::dvec2 q = map(glm::dvec2(p));
+      if (q.x < lo.x + margin || q.y < lo.y + margin || q.x > hi.x - margin || q.y > hi.y - margin) continue;
+      ++landed;
+      for (const Vec3& r : swatch.mesh.positions)
+        if (glm::distance(Vec3(q, p.z), r) <= tolerance) {
+          ++matched;
+          break;
+        }
+    }
+    return landed > 100 && matched >= 0.9 * landed;
+  };
+  for (const glm::dvec2& period : lattice->basis)
+    EXPECT_TRUE(maps_onto_itself([&](const glm::dvec2& p) { return p + period; })) << period.x << " " << period.y;
+  const glm::dvec2 c = lattice->centre;
+  EXPECT_TRUE(maps_onto_itself([&](const glm::dvec2& p) { return 2.0 * c - p; }));
+  // Not every step between two yarns is one: half a period puts a warp where its neighbour is,
+  // over where the neighbour goes under.
+  EXPECT_FALSE(maps_onto_itself([&](const glm::dvec2& p) { return p + 0.5 * lattice->basis[0]; }));
+}
+
 }  // namespace
 }  // namespace meshquilt

@@ -80,5 +80,27 @@ TEST(CurvedGolden, TextureFileAndEmbedOutputsAreByteIdentical) {
   EXPECT_EQ(test::fnv1a_hex(test::read_file(normal)), "e04c65e6c3cb4101");
 }
 
+// On the weave's periods, copies of a yarn placed end to end are joined into one element; the
+// texture holds the joined yarns, and `embed` must place each as synth did.
+TEST(CurvedGolden, JoinedYarnsEmbedBackAsSynthPlacedThem) {
+  const auto dir = test::scratch_dir("curved_golden_joined");
+  const auto weave = dir / "weave.ply", out = dir / "out.ply", texture = dir / "sphere.mqt", stats = dir / "stats.json";
+  ASSERT_EQ(test::run_cli("swatch weave --preset small -o '" + weave.string() + "'").exit_code, 0);
+  const auto sphere = std::filesystem::path(MESHQUILT_SOURCE_DIR) / "data/sphere.off";
+  const auto run = test::run_cli("synth --swatch '" + weave.string() + "' --base '" + sphere.string() +
+                                 "' --scale 0.3 --backend cpu --progress none --stats '" + stats.string() +
+                                 "' --write-texture '" + texture.string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string figures = test::read_file(stats);
+  const size_t at = figures.find("\"joined_elements\": ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_GT(std::stoi(figures.substr(at + std::string("\"joined_elements\": ").size())), 0);
+  const auto embedded = dir / "embedded.ply";
+  const auto embed_run = test::run_cli("embed --texture '" + texture.string() + "' --base '" + sphere.string() + "' -o '" +
+                                       embedded.string() + "'");
+  ASSERT_EQ(embed_run.exit_code, 0) << embed_run.output;
+  EXPECT_EQ(test::read_file(embedded), test::read_file(out));
+}
+
 }  // namespace
 }  // namespace meshquilt

@@ -218,7 +218,8 @@ void expect_quality(const SurfaceRun& run, const TriMesh& swatch, const char* wh
   EXPECT_LE(q.height_max, run.stats.shell_height / diagonal + bar.max_height_over);
   EXPECT_GE(q.closed, 0.95 * q.elements);
   EXPECT_LE(q.intersecting_share, 0.01);
-  const int total = q.elements + run.stats.dropped_elements;
+  // Copies joined end to end into one yarn count as the elements they were placed as.
+  const int total = q.elements + run.stats.dropped_elements + run.stats.joined_elements;
   EXPECT_LE(run.stats.dropped_elements - run.stats.dropped_folded, bar.max_dropped_share * total);
   EXPECT_LE(run.stats.dropped_folded, bar.max_folded_share * total);
   EXPECT_EQ(q.self_intersecting_pairs, 0);
@@ -490,7 +491,8 @@ TEST_P(SharedBase, MeetsTheQualityBar) {
 // Measured bounds where deformed elements pass through themselves (dropped, see decision 0033):
 // fertility 4.0% of its rings (its coverage falls to 0.936 with them), the two knots 3.8%, the
 // teapot 12.9% (its crease rings fold with per-patch charts too: 30 of 187), the fertility weave
-// 11.5% of its yarns.
+// 11.5% of its yarns, the bunny weave 3.0% (5 yarns, as many as before its yarns were placed on
+// the weave's periods, now of fewer and longer pieces).
 QualityBar folding_bar(QualityBar bar, double max_folded_share, double min_coverage = 0.97) {
   bar.max_folded_share = max_folded_share;
   bar.min_coverage = min_coverage;
@@ -509,7 +511,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, SharedBase,
                                            SharedCase{"head.off", 0.2, {}},
                                            SharedCase{"knot2.off", 0.2, folding_bar({}, 0.05)},
                                            SharedCase{"teapot.obj", 0.2, folding_bar({}, 0.15, 0.96)},
-                                           SharedCase{"bunny.off", 0.13, issue_bar(), Embed::shell, true},
+                                           SharedCase{"bunny.off", 0.13, folding_bar(issue_bar(), 0.04), Embed::shell, true},
                                            SharedCase{"fertility.off", 0.13, folding_bar(issue_bar(), 0.13), Embed::shell, true}),
                          [](const auto& info) {
                            std::string name = info.param.file;

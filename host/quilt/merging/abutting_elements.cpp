@@ -28,7 +28,7 @@ bool opposite(const std::array<int32_t, 3>& a, const std::array<int32_t, 3>& b) 
 
 }  // namespace
 
-int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance) {
+int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::vector<int32_t>* kept_vertices) {
   const size_t face_count = layer.num_faces();
   if (face_count == 0 || layer.elements.size() != face_count) return 0;
   // Corners that coincide as inspect's welding would see them (the same clustering).
@@ -119,6 +119,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance) {
     joined += static_cast<int32_t>(elements.size()) - 1;
   }
   if (joined == 0) return 0;
+  if (kept_vertices) kept_vertices->clear();
 
   // Rebuild: surviving faces in order with welded corners, the vertices they use in their old
   // order (the caps' centres, used only by removed faces, go), element ids consecutive in order
@@ -133,6 +134,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance) {
       vertex_map[v] = static_cast<int32_t>(compact.positions.size());
       compact.positions.push_back(layer.positions[v]);
       if (!layer.origins.empty()) compact.origins.push_back(layer.origins[v]);
+      if (kept_vertices) kept_vertices->push_back(static_cast<int32_t>(v));
     }
   std::vector<int32_t> renumbered(static_cast<size_t>(element_count), -1);
   int32_t next_element = 0;

@@ -6,6 +6,7 @@
 //! vertices makes them one closed yarn.
 
 #include <cstdint>
+#include <vector>
 
 #include "mesh/tri_mesh.h"
 
@@ -18,7 +19,8 @@ namespace meshquilt {
 //! lowest element id of its members; a group whose union would not be a closed 2-manifold is
 //! left as it was. Element ids are renumbered to stay consecutive in order of first face;
 //! unreferenced vertices are dropped. Returns how many elements were joined into others (0
-//! leaves `layer` unchanged).
-int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance);
+//! leaves `layer` unchanged). kept_vertices, when given and something was joined: the vertex of
+//! the old layer each new vertex is.
+int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::vector<int32_t>* kept_vertices = nullptr);
 
 }  // namespace meshquilt
