@@ -2,7 +2,9 @@
 // from a height image (white high), as paint synthesizes colour, then the base displaced. With
 // `--from MODEL` instead of an image, the sample is the detail of another model (Lai et al.
 // 2005): the model minus its smoothed self, over a region of it, flattened into a height image.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -26,7 +28,7 @@ namespace meshquilt::cli {
 namespace {
 
 struct ReliefArgs {
-  std::string base, image, output, field, stats;
+  std::string base, image, output, field, stats, write_sample;
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   ReliefOptions options;
@@ -63,17 +65,32 @@ nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, boo
           {"detail_high", detail.high}};
 }
 
+// The sample's luma, as relief reads it, as a 16-bit plain PGM.
+std::string grey_pgm(const ColourImage& image) {
+  std::string text = "P2\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n65535\n";
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const glm::dvec3& c = image.at(x, y);
+      const double luma = std::clamp(0.299 * c.r + 0.587 * c.g + 0.114 * c.b, 0.0, 1.0);
+      text += std::to_string(std::lround(65535.0 * luma)) + (x + 1 < image.width ? " " : "\n");
+    }
+  }
+  return text;
+}
+
 void run_relief(ReliefArgs& args, bool height_given) {
   const auto start = std::chrono::steady_clock::now();
   if (args.image.empty() == args.model.empty())
     throw InputError("relief: expected one of --image and --from", ErrorKind::invalid_option);
   if (!args.image.empty() && !height_given)
     throw InputError("--height: required with --image", ErrorKind::invalid_option);
+  if (!args.write_sample.empty()) check_writable(args.write_sample);
   ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
                                                          args.pixels_per_unit, args.output, args.stats);
   nlohmann::json from;
   if (!args.model.empty()) from = sample_from_model(args, in, height_given, args.pixels_per_unit > 0.0);
   args.options.paint.pixels_per_unit = in.pixels_per_unit;
+  if (!args.write_sample.empty()) write_text_atomic(args.write_sample, grey_pgm(in.sample));
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options);
   write_mesh(relief.mesh, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -89,6 +106,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
                                   {"height", args.options.height},
                                   {"highest", highest},
                                   {"clamped_vertices", relief.clamped},
+                                  {"crossing_lowered_vertices", relief.lowered_crossing},
                                   {"seconds", seconds}};
   if (!from.is_null()) summary["from"] = from;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
@@ -128,6 +146,7 @@ void add_relief_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->options.paint.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
+  cmd->add_option("--write-sample", args->write_sample, "write the height sample used (grey, 16-bit PGM)");
   cmd->callback([args, height] { run_relief(*args, height->count() > 0); });
 }
 

@@ -8,9 +8,17 @@
 
 #include "core/error.h"
 #include "spatial/face_bvh.h"
+#include "spatial/intersecting_pairs.h"
 #include "surface/surface_types.h"
 
 namespace meshquilt {
+namespace {
+
+// Halvings of the heights of faces that cross before they go to 0 (2^-11 of a height: below any
+// fold's depth).
+constexpr int kCrossingRounds = 12;
+
+}  // namespace
 
 ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
                             const std::vector<FieldConstraint>& constraints, const ReliefOptions& options) {
@@ -55,6 +63,30 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
     moved[v] = p + h * normal;
   }
   result.mesh.positions = std::move(moved);
+  // Those clamps look at one vertex at a time: across a crease, or a fold of a scan, raised
+  // neighbours may still cross. Their heights are halved until no two faces cross (the base
+  // itself, at height 0, is the last resort).
+  const std::vector<int32_t> one_element(mesh.num_faces(), 0);
+  std::vector<uint8_t> lowered(n, 0);
+  for (int round = 0; round < kCrossingRounds; ++round) {
+    const std::vector<FacePair> crossing =
+        intersecting_face_pairs(result.mesh, one_element, IntersectionScope::same_element);
+    if (crossing.empty()) break;
+    std::vector<uint8_t> lower(n, 0);
+    for (const auto& [f, g] : crossing)
+      for (int32_t v : {mesh.triangles[f][0], mesh.triangles[f][1], mesh.triangles[f][2], mesh.triangles[g][0],
+                        mesh.triangles[g][1], mesh.triangles[g][2]})
+        lower[v] = 1;
+    for (size_t v = 0; v < n; ++v) {
+      if (!lower[v] || result.heights[v] <= 0.0) continue;
+      result.heights[v] = round + 1 < kCrossingRounds ? 0.5 * result.heights[v] : 0.0;
+      result.mesh.positions[v] = mesh.positions[v] + result.heights[v] * surface.vertex_normals[v];
+      if (!lowered[v]) {
+        lowered[v] = 1;
+        ++result.lowered_crossing;
+      }
+    }
+  }
   return result;
 }
 

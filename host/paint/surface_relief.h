@@ -4,7 +4,8 @@
 //! normals by height x signal. Heights are clamped where the displaced surface would pass through
 //! itself: each to a share of the room along its normal (the distance to the surface met by a ray
 //! along it) and of the radius of curvature where the surface is concave (neighbouring normals
-//! converge there). Connectivity is the base's refined one, so a closed base stays closed.
+//! converge there); then, where faces still cross, their vertices' heights are halved until none
+//! do. Connectivity is the base's refined one, so a closed base stays closed.
 
 #include <vector>
 
@@ -21,7 +22,8 @@ struct ReliefOptions {
 struct ReliefResult {
   TriMesh mesh;                 //!< the base refined and displaced, vertex colours the signal in grey
   std::vector<double> heights;  //!< #V displacement of each vertex along its normal, after clamping
-  int clamped = 0;              //!< vertices whose height was lowered
+  int clamped = 0;              //!< vertices whose height was lowered to their room
+  int lowered_crossing = 0;     //!< vertices lowered further where raised faces still crossed
   int levels = 0;               //!< 1-to-4 splits of the base
 };
 
