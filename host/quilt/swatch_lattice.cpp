@@ -243,15 +243,11 @@ std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symme
   // where that turn leaves fixed: p_j = c + R (p_m - c).
   const std::vector<ElementShape>& shapes = set.shapes();
   const glm::dvec2 pm = shapes[middle].centre;
-  const double c = std::cos(angle), s = std::sin(angle);
-  // (I - R) c = p_j - R p_m; I - R is invertible for a turn other than the identity.
-  const double a11 = 1.0 - c, a12 = s, a21 = -s, a22 = 1.0 - c, det = a11 * a22 - a12 * a21;
   int best_matched = -1;
   double best_distance = std::numeric_limits<double>::max();
   for (const ElementShape& other : shapes) {
     if (!shapes[middle].matches_turned(other, angle)) continue;
-    const glm::dvec2 r = other.centre - turned(pm, angle);
-    const glm::dvec2 centre((a22 * r.x - a12 * r.y) / det, (a11 * r.y - a21 * r.x) / det);
+    const glm::dvec2 centre = turn_centre(pm, other.centre, angle);
     const MapScore score = set.score([&](const glm::dvec2& p) { return centre + turned(p - centre, angle); }, angle);
     if (!score.holds()) continue;
     const double distance = glm::distance(centre, set.middle());
