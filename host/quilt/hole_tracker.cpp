@@ -18,6 +18,12 @@ void HoleTracker::attempted(int cell) {
   seeds_.mark_processed(cell);
 }
 
+void HoleTracker::give_up(int cell) {
+  if (seeds_.processed(cell)) return;
+  hole_[cell] = 1;
+  seeds_.mark_processed(cell);
+}
+
 HoleSummary HoleTracker::summary(const std::vector<std::vector<int32_t>>& neighbours,
                                  const std::vector<double>& cell_areas) const {
   HoleSummary s;

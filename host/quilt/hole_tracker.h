@@ -27,6 +27,9 @@ class HoleTracker {
   //! number of attempts it becomes a hole and is marked processed.
   void attempted(int cell);
 
+  //! Makes `cell` a hole now, marked processed: for a patch that would come out the same again.
+  void give_up(int cell);
+
   //! Hole cells grouped by `neighbours` (#cells adjacency lists, as for SeedFinder); areas from
   //! `cell_areas` (#cells), or 1 per cell when it is empty.
   HoleSummary summary(const std::vector<std::vector<int32_t>>& neighbours,

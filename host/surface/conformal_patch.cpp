@@ -354,59 +354,62 @@ bool triangles_overlap(const std::array<glm::dvec2, 3>& a, const std::array<glm:
   return true;
 }
 
-// Of each two faces of the patch whose plane images overlap and share no base vertex, the one
-// farther from `origin` in space: round a cone of negative index, or over a fold of the base, a
-// window wraps over itself, and a point there would stand for two places.
+// The faces of the patch whose plane image overlaps that of a face nearer to `origin` in space
+// (sharing no base vertex with it), taken nearest first: round a cone of negative index, or over
+// a fold of the base, a window wraps over itself, and a point there would stand for two places.
+// Nearest first keeps a whole disk slit where the two sheets meet; dropping the farther of each
+// overlapping pair would also drop faces whose partner was itself dropped, and hole both sheets.
 std::vector<uint8_t> overlapping_faces(const SurfacePatch& patch, const TriMesh& mesh, const Vec3& origin) {
   const size_t n = patch.faces.size();
   std::vector<uint8_t> result(n, 0);
   if (n == 0) return result;
-  const auto distance = [&](int32_t f) {
-    const Tri& t = mesh.triangles[patch.faces[f]];
-    return glm::distance(origin, (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0);
-  };
   std::vector<std::array<glm::dvec2, 3>> tri(n);
+  std::vector<glm::dvec2> box_lo(n), box_hi(n);
+  std::vector<std::pair<double, int32_t>> order(n);
   glm::dvec2 lo(1e300), hi(-1e300);
   double edge = 0.0;
   for (size_t f = 0; f < n; ++f) {
-    for (int c = 0; c < 3; ++c) {
-      tri[f][c] = patch.uv[patch.local_vertex_of_face_[3 * f + c]];
-      lo = glm::min(lo, tri[f][c]);
-      hi = glm::max(hi, tri[f][c]);
-    }
+    const Tri& t = mesh.triangles[patch.faces[f]];
+    for (int c = 0; c < 3; ++c) tri[f][c] = patch.uv[patch.local_vertex_of_face_[3 * f + c]];
+    box_lo[f] = glm::min(glm::min(tri[f][0], tri[f][1]), tri[f][2]);
+    box_hi[f] = glm::max(glm::max(tri[f][0], tri[f][1]), tri[f][2]);
+    lo = glm::min(lo, box_lo[f]);
+    hi = glm::max(hi, box_hi[f]);
     edge += glm::length(tri[f][1] - tri[f][0]);
+    const Vec3 centre = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+    order[f] = {glm::distance(origin, centre), static_cast<int32_t>(f)};
   }
+  std::sort(order.begin(), order.end());
   edge = std::max(edge / n, 1e-300);
   const double cell = 2.0 * edge;
   const int nx = std::max(1, std::min(1024, static_cast<int>((hi.x - lo.x) / cell) + 1));
   const int ny = std::max(1, std::min(1024, static_cast<int>((hi.y - lo.y) / cell) + 1));
-  std::vector<std::vector<int32_t>> grid(static_cast<size_t>(nx) * ny);
   const auto column = [&](double x) { return std::clamp(static_cast<int>((x - lo.x) / cell), 0, nx - 1); };
   const auto row = [&](double y) { return std::clamp(static_cast<int>((y - lo.y) / cell), 0, ny - 1); };
-  std::vector<glm::dvec2> box_lo(n), box_hi(n);
-  for (size_t f = 0; f < n; ++f) {
-    box_lo[f] = glm::min(glm::min(tri[f][0], tri[f][1]), tri[f][2]);
-    box_hi[f] = glm::max(glm::max(tri[f][0], tri[f][1]), tri[f][2]);
-    for (int y = row(box_lo[f].y); y <= row(box_hi[f].y); ++y)
-      for (int x = column(box_lo[f].x); x <= column(box_hi[f].x); ++x)
-        grid[static_cast<size_t>(y) * nx + x].push_back(static_cast<int32_t>(f));
-  }
-  for (size_t cell_index = 0; cell_index < grid.size(); ++cell_index) {
-    const std::vector<int32_t>& bucket = grid[cell_index];
-    for (size_t i = 0; i < bucket.size(); ++i)
-      for (size_t j = i + 1; j < bucket.size(); ++j) {
-        const int32_t f = bucket[i], g = bucket[j];
-        const glm::dvec2 lo_both = glm::max(box_lo[f], box_lo[g]), hi_both = glm::min(box_hi[f], box_hi[g]);
-        if (lo_both.x >= hi_both.x || lo_both.y >= hi_both.y) continue;
-        // Each pair once: in the cell holding the lower corner of their boxes' intersection.
-        if (static_cast<size_t>(row(lo_both.y)) * nx + column(lo_both.x) != cell_index) continue;
-        const Tri& tf = mesh.triangles[patch.faces[f]];
-        const Tri& tg = mesh.triangles[patch.faces[g]];
-        bool shared = false;
-        for (int32_t v : tf) shared = shared || v == tg[0] || v == tg[1] || v == tg[2];
-        if (shared || !triangles_overlap(tri[f], tri[g], 1e-3 * edge)) continue;
-        result[distance(f) > distance(g) ? f : g] = 1;
-      }
+  // Faces kept so far, by grid cell.
+  std::vector<std::vector<int32_t>> grid(static_cast<size_t>(nx) * ny);
+  for (const auto& [distance, f] : order) {
+    const Tri& tf = mesh.triangles[patch.faces[f]];
+    const int x0 = column(box_lo[f].x), x1 = column(box_hi[f].x), y0 = row(box_lo[f].y), y1 = row(box_hi[f].y);
+    bool covered = false;
+    for (int y = y0; y <= y1 && !covered; ++y)
+      for (int x = x0; x <= x1 && !covered; ++x)
+        for (int32_t g : grid[static_cast<size_t>(y) * nx + x]) {
+          const glm::dvec2 lo_both = glm::max(box_lo[f], box_lo[g]), hi_both = glm::min(box_hi[f], box_hi[g]);
+          if (lo_both.x >= hi_both.x || lo_both.y >= hi_both.y) continue;
+          const Tri& tg = mesh.triangles[patch.faces[g]];
+          bool shared = false;
+          for (int32_t v : tf) shared = shared || v == tg[0] || v == tg[1] || v == tg[2];
+          if (shared || !triangles_overlap(tri[f], tri[g], 1e-3 * edge)) continue;
+          covered = true;
+          break;
+        }
+    if (covered) {
+      result[f] = 1;
+      continue;
+    }
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) grid[static_cast<size_t>(y) * nx + x].push_back(f);
   }
   return result;
 }

@@ -185,6 +185,12 @@ class SurfaceDriver {
       seeds_.mark_processed(seed_cell);
       processed_area_ += cells_.areas[seed_cell];
     }
+    // Seeded again, a layout window is the same window (its distortion is never what failed), so
+    // a cell it left uncovered is a hole at once.
+    if (patch.chart == PatchChart::layout_window && !seeds_.processed(seed_cell)) {
+      holes_.give_up(seed_cell);
+      processed_area_ += cells_.areas[seed_cell];
+    }
   }
 
   // On a layout whose seams continue by the swatch's periods, the pattern fits only where a

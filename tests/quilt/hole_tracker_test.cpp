@@ -44,6 +44,18 @@ TEST(HoleTracker, OneAttemptMakesAHoleAtOnce) {
   EXPECT_TRUE(seeds.processed(3));
 }
 
+TEST(HoleTracker, GivingUpMakesAHoleBeforeItsAttemptsButNeverOfACoveredCell) {
+  SeedFinder seeds(2, 2);
+  HoleTracker tracker(seeds, 3);
+  tracker.give_up(1);
+  EXPECT_TRUE(tracker.hole_cells()[1]);
+  EXPECT_TRUE(seeds.processed(1));
+  seeds.mark_processed(2);
+  tracker.give_up(2);
+  EXPECT_FALSE(tracker.hole_cells()[2]);
+  EXPECT_EQ(tracker.summary(grid_neighbours(2, 2)).cells, 1);
+}
+
 TEST(HoleTracker, AttemptsBelowOneAreRefused) {
   SeedFinder seeds(2, 2);
   try {
