@@ -18,7 +18,7 @@ namespace meshquilt::cli {
 namespace {
 
 struct PaintArgs {
-  std::string base, image, output, field, stats;
+  std::string base, image, output, field, stats, write_field;
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   PaintOptions options;
@@ -43,6 +43,15 @@ void run_paint(PaintArgs& args) {
                                   {"mean_cost", painted.mean_cost},
                                   {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
+  if (!args.write_field.empty()) {
+    std::string lines;
+    char line[96];
+    for (const Vec3& d : painted.directions) {
+      std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", d.x, d.y, d.z);
+      lines += line;
+    }
+    write_text_atomic(args.write_field, lines);
+  }
   std::printf("wrote %s: %zu vertices coloured from %s (%d x %d) in %.1f s\n", args.output.c_str(),
               painted.mesh.num_vertices(), args.image.c_str(), in.sample.width, in.sample.height, seconds);
 }
@@ -66,6 +75,8 @@ void add_paint_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->options.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
+  cmd->add_option("--write-field", args->write_field,
+                  "write the field each output vertex was painted along, one 'x y z' line per vertex");
   cmd->callback([args] { run_paint(*args); });
 }
 

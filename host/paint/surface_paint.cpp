@@ -71,6 +71,25 @@ std::vector<std::pair<int32_t, int32_t>> midpoint_parents(const TriMesh& mesh) {
   return parents;
 }
 
+// The field on split_faces(mesh, 1): old vertices keep theirs, a midpoint takes its edge's mean,
+// each in its own tangent plane. Spread over the split mesh instead, the given directions would
+// reach as many edges as over the base, so a fraction of the distance: not synth's field.
+std::vector<Vec3> split_field(const TriMesh& mesh, const std::vector<Vec3>& directions, const BaseSurface& finer) {
+  std::vector<Vec3> out(finer.mesh.num_vertices());
+  std::copy(directions.begin(), directions.end(), out.begin());
+  const std::vector<std::pair<int32_t, int32_t>> parents = midpoint_parents(mesh);
+  for (size_t k = 0; k < parents.size(); ++k) {
+    const Vec3 a = directions[parents[k].first], b = directions[parents[k].second];
+    out[mesh.num_vertices() + k] = glm::length(a + b) > 1e-9 ? a + b : a;
+  }
+  for (size_t v = 0; v < out.size(); ++v) {
+    const Vec3& n = finer.vertex_normals[v];
+    const Vec3 t = out[v] - glm::dot(out[v], n) * n;
+    if (glm::length(t) > 1e-9) out[v] = glm::normalize(t);
+  }
+  return out;
+}
+
 // A neighbour of the vertex being coloured: where it lies in the vertex's frame, in pixels.
 struct Neighbour {
   int32_t vertex;
@@ -201,15 +220,21 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
          pyramid.back().height / 2 > options.window)
     pyramid.push_back(halved(pyramid.back()));
   const int coarsest = static_cast<int>(pyramid.size()) - 1;
-  TriMesh mesh = split_faces(base, result.levels - coarsest);
+  // Synth's field: spread over the base, then carried to each split.
+  TriMesh mesh = base;
+  std::vector<Vec3> directions = interpolate_field(BaseSurface(base), constraints).directions;
+  for (int k = 0; k < result.levels - coarsest; ++k) {
+    TriMesh finer = split_faces(mesh, 1);
+    directions = split_field(mesh, directions, BaseSurface(finer));
+    mesh = std::move(finer);
+  }
   std::vector<glm::dvec2> sources;
   double cost = 0.0;
   for (int step = coarsest; step >= 0; --step) {
     const double pixels_per_unit = std::ldexp(options.pixels_per_unit, -step);
     const BaseSurface surface(mesh);
-    const GuidanceField field = interpolate_field(surface, constraints);
-    result.order = sweep_order(sweep_function(surface, field.directions));
-    Painter painter(surface, field.directions, pyramid[step], pixels_per_unit, options, options.seed + step);
+    result.order = sweep_order(sweep_function(surface, directions));
+    Painter painter(surface, directions, pyramid[step], pixels_per_unit, options, options.seed + step);
     // The coarsest level is swept; a finer one starts from the coarser positions carried over
     // and is corrected with whole neighbourhoods.
     const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);
@@ -222,6 +247,7 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     if (step == 0) {
       result.mesh = std::move(mesh);
       result.source = sources;
+      result.directions = directions;
       const std::vector<glm::dvec3>& colours = painter.colours();
       result.mesh.colors.resize(result.mesh.num_vertices());
       for (size_t v = 0; v < result.mesh.num_vertices(); ++v) {
@@ -241,12 +267,13 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     for (size_t v = 0; v < mesh.num_vertices(); ++v) carried[v] = 2.0 * sources[v];
     for (size_t k = 0; k < parents.size(); ++k) {
       const int32_t a = parents[k].first;
-      const Vec3& d = field.directions[a];
+      const Vec3& d = directions[a];
       const Vec3 b = glm::normalize(glm::cross(surface.vertex_normals[a], d));
       const Vec3 q = finer.positions[mesh.num_vertices() + k] - mesh.positions[a];
       carried[mesh.num_vertices() + k] = 2.0 * sources[a] + next * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
     }
     sources = std::move(carried);
+    directions = split_field(mesh, directions, BaseSurface(finer));
     mesh = std::move(finer);
   }
   result.mean_cost = cost / static_cast<double>(std::max<size_t>(1, result.order.size()));

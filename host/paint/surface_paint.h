@@ -34,6 +34,7 @@ struct PaintResult {
   TriMesh mesh;                        //!< the base refined, with a colour per vertex
   std::vector<glm::dvec2> source;      //!< #V sample position (pixels) each vertex took its colour from
   std::vector<int32_t> order;          //!< the sweep: vertices in the order they were coloured
+  std::vector<Vec3> directions;        //!< #V the field at each vertex: its frame's x axis
   int levels = 0;                      //!< 1-to-4 splits of the base
   double mean_cost = 0.0;              //!< mean neighbourhood mismatch of the last pass, per neighbour
 };

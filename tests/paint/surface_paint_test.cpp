@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -12,6 +13,7 @@
 #include "paint/surface_paint.h"
 #include "paint/sweep_order.h"
 #include "support/surface_fixtures.h"
+#include "surface/guidance_field.h"
 #include "surface/surface_types.h"
 
 namespace meshquilt {
@@ -112,6 +114,37 @@ TEST(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
   EXPECT_NEAR(same_along_x(painted), 0.75, 0.05);
   const PaintResult turned = paint_surface(plane, image, along(plane, Vec3(0, 1, 0)), options);
   EXPECT_GT(same_along_x(turned), 0.95);
+}
+
+TEST(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
+  // One direction held on a coarse plane: the field synth spreads over the base. Spread over the
+  // refined mesh instead, it would turn back to the default within a few fine edges.
+  const TriMesh plane = test::flat_grid(8, 8, 0.125, 0.0);
+  const std::vector<FieldConstraint> held{{40, glm::normalize(Vec3(1, 1, 0))}};
+  const BaseSurface surface(plane);
+  const GuidanceField synth_field = interpolate_field(surface, held);
+  ColourImage image;
+  image.width = image.height = 16;
+  image.rgb.assign(256, glm::dvec3(0.5));
+  PaintOptions options;
+  options.pixels_per_unit = 64.0;
+  const PaintResult painted = paint_surface(plane, image, held, options);
+  ASSERT_GE(painted.levels, 3);
+  ASSERT_EQ(painted.directions.size(), painted.mesh.num_vertices());
+  // The base's own vertices come first in the refined mesh and keep synth's directions; a
+  // midpoint lies between its edge's.
+  double worst = 0.0;
+  for (size_t v = 0; v < plane.num_vertices(); ++v)
+    worst = std::max(worst, glm::length(painted.directions[v] - synth_field.directions[v]));
+  EXPECT_LT(worst, 1e-9);
+  for (size_t v = plane.num_vertices(); v < painted.mesh.num_vertices(); ++v) {
+    size_t nearest = 0;
+    for (size_t w = 1; w < plane.num_vertices(); ++w)
+      if (glm::distance(plane.positions[w], painted.mesh.positions[v]) <
+          glm::distance(plane.positions[nearest], painted.mesh.positions[v]))
+        nearest = w;
+    EXPECT_GT(glm::dot(painted.directions[v], synth_field.directions[nearest]), std::cos(10.0 * std::numbers::pi / 180.0)) << v;
+  }
 }
 
 TEST(SurfacePaint, IsDeterministicForASeedAndRefusesBadOptions) {
