@@ -1,5 +1,7 @@
 #include "image_synthesis_inputs.h"
 
+#include <cstdio>
+
 #include <glm/geometric.hpp>
 
 #include "atomic_file.h"
@@ -25,6 +27,16 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   in.diagonal = glm::length(bounding_box(in.base.positions).extent());
   in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * in.diagonal);
   return in;
+}
+
+void write_field_lines(const std::string& file, const std::vector<Vec3>& directions) {
+  std::string lines;
+  char line[96];
+  for (const Vec3& d : directions) {
+    std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", d.x, d.y, d.z);
+    lines += line;
+  }
+  write_text_atomic(file, lines);
 }
 
 }  // namespace meshquilt::cli

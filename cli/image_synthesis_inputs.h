@@ -1,5 +1,6 @@
 #pragma once
-// What `paint` and `relief` read: the base, the image sample, the field and the sample's scale.
+// What `paint` and `relief` read (the base, the image sample, the field and the sample's scale),
+// and the field they write back with --write-field.
 
 #include <string>
 #include <vector>
@@ -25,5 +26,8 @@ struct ImageSynthesisInputs {
 ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
                                                  const std::string& field, double scale, double pixels_per_unit,
                                                  const std::string& output, const std::string& stats);
+
+//! Writes one "x y z" line per direction (the field at each output vertex), atomically.
+void write_field_lines(const std::string& file, const std::vector<Vec3>& directions);
 
 }  // namespace meshquilt::cli

@@ -26,6 +26,7 @@ struct PaintArgs {
 
 void run_paint(PaintArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  if (!args.write_field.empty()) check_writable(args.write_field);
   const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
                                                                args.pixels_per_unit, args.output, args.stats);
   args.options.pixels_per_unit = in.pixels_per_unit;
@@ -43,15 +44,7 @@ void run_paint(PaintArgs& args) {
                                   {"mean_cost", painted.mean_cost},
                                   {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
-  if (!args.write_field.empty()) {
-    std::string lines;
-    char line[96];
-    for (const Vec3& d : painted.directions) {
-      std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", d.x, d.y, d.z);
-      lines += line;
-    }
-    write_text_atomic(args.write_field, lines);
-  }
+  if (!args.write_field.empty()) write_field_lines(args.write_field, painted.directions);
   std::printf("wrote %s: %zu vertices coloured from %s (%d x %d) in %.1f s\n", args.output.c_str(),
               painted.mesh.num_vertices(), args.image.c_str(), in.sample.width, in.sample.height, seconds);
 }

@@ -28,7 +28,7 @@ namespace meshquilt::cli {
 namespace {
 
 struct ReliefArgs {
-  std::string base, image, output, field, stats, write_sample;
+  std::string base, image, output, field, stats, write_sample, write_field;
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   ReliefOptions options;
@@ -85,6 +85,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
   if (!args.image.empty() && !height_given)
     throw InputError("--height: required with --image", ErrorKind::invalid_option);
   if (!args.write_sample.empty()) check_writable(args.write_sample);
+  if (!args.write_field.empty()) check_writable(args.write_field);
   ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
                                                          args.pixels_per_unit, args.output, args.stats);
   nlohmann::json from;
@@ -93,6 +94,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
   if (!args.write_sample.empty()) write_text_atomic(args.write_sample, grey_pgm(in.sample));
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options);
   write_mesh(relief.mesh, args.output);
+  if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   double highest = 0.0;
   for (double h : relief.heights) highest = std::max(highest, h);
@@ -147,6 +149,8 @@ void add_relief_command(CLI::App& app) {
   cmd->add_option("--seed", args->options.paint.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
   cmd->add_option("--write-sample", args->write_sample, "write the height sample used (grey, 16-bit PGM)");
+  cmd->add_option("--write-field", args->write_field,
+                  "write the field each output vertex was synthesized along, one 'x y z' line per vertex");
   cmd->callback([args, height] { run_relief(*args, height->count() > 0); });
 }
 

@@ -13,7 +13,8 @@
 namespace meshquilt {
 namespace {
 
-int wrapped(int i, int n) { return ((i % n) + n) % n; }
+// Divisions only off the image: the painter reads mostly inside it.
+int wrapped(int i, int n) { return i >= 0 && i < n ? i : ((i % n) + n) % n; }
 
 ColourImage read_png(const std::string& bytes, const std::string& name) {
   png_image png{};
@@ -55,7 +56,7 @@ glm::dvec3 ColourImage::sample(const glm::dvec2& p) const {
   const double fx = std::floor(x), fy = std::floor(y);
   const double tx = x - fx, ty = y - fy;
   const int x0 = wrapped(static_cast<int>(fx), width), y0 = wrapped(static_cast<int>(fy), height);
-  const int x1 = wrapped(x0 + 1, width), y1 = wrapped(y0 + 1, height);
+  const int x1 = x0 + 1 == width ? 0 : x0 + 1, y1 = y0 + 1 == height ? 0 : y0 + 1;
   return (1.0 - ty) * ((1.0 - tx) * at(x0, y0) + tx * at(x1, y0)) + ty * ((1.0 - tx) * at(x0, y1) + tx * at(x1, y1));
 }
 

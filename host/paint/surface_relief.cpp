@@ -30,6 +30,7 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   ReliefResult result;
   result.levels = painted.levels;
   result.mesh = painted.mesh;
+  result.directions = painted.directions;
   const TriMesh& mesh = painted.mesh;
   const BaseSurface surface(mesh);
   const FaceBvh bvh(mesh);

@@ -22,6 +22,7 @@ struct ReliefOptions {
 struct ReliefResult {
   TriMesh mesh;                 //!< the base refined and displaced, vertex colours the signal in grey
   std::vector<double> heights;  //!< #V displacement of each vertex along its normal, after clamping
+  std::vector<Vec3> directions; //!< #V the field the signal was synthesized along
   int clamped = 0;              //!< vertices whose height was lowered to their room
   int lowered_crossing = 0;     //!< vertices lowered further where raised faces still crossed
   int levels = 0;               //!< 1-to-4 splits of the base

@@ -10,13 +10,15 @@ sample, taken at quarter-pixel shifts too, since the painter reads the sample be
 - leave-one-out: each of some sample windows against the best window at least 3 pixels away;
 - a plain planar projection: every vertex coloured by the sample laid over the plane of the
   surface's two longest principal axes, at the same pitch.
+With --heights-over, the mesh is a relief: its signal is read back from the geometry as
+relief_heights.py reads it, and its neighbourhoods are taken on the base under it.
 With --stripes, the sample's stripes run along its x axis: a plane fitted to the luma round each
 centre gives the stripes' direction, whose angle to the field is reported.
 
 Prints a JSON summary; exits 1 when a ratio or the angle passes its bound.
 
 usage: paint_neighbourhoods.py --painted OUT.ply --field FIELD.txt --sample SAMPLE.ppm|.pgm
-       --stats S.json [--centres N] [--seed S] [--stripes] [--max-loo-ratio R]
+       --stats S.json [--heights-over BASE] [--centres N] [--seed S] [--stripes] [--max-loo-ratio R]
        [--max-projection-ratio R] [--max-stripe-angle DEG]
 """
 import argparse
@@ -27,7 +29,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from relief_heights import read_ply  # noqa: E402
+from relief_heights import read_off, read_ply, surface_closest  # noqa: E402
 
 HALF = 3  # 7 x 7
 
@@ -182,6 +184,9 @@ def main():
     parser.add_argument("--stats", required=True)
     parser.add_argument("--centres", type=int, default=300)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--heights-over", metavar="BASE",
+                        help="the painted mesh is a relief over BASE: its signal is each vertex's height read back as "
+                             "its distance to BASE over the stats' height of white, at its nearest point of BASE")
     parser.add_argument("--stripes", action="store_true")
     parser.add_argument("--max-loo-ratio", type=float)
     parser.add_argument("--max-projection-ratio", type=float)
@@ -189,9 +194,17 @@ def main():
     args = parser.parse_args()
 
     vertices, faces, colours = read_ply(args.painted)
-    if colours is None:
+    if args.heights_over:
+        base = read_off(args.heights_over) if args.heights_over.endswith(".off") else read_ply(args.heights_over)[:2]
+        white = json.load(open(args.stats))["height"]
+        heights, vertices = surface_closest(vertices, base[0], base[1], 1.05 * white)
+        if not np.all(np.isfinite(heights)):
+            sys.exit(args.painted + ": a vertex lies farther from the base than the height of white")
+        colours = np.repeat((heights / white)[:, None], 3, axis=1)
+    elif colours is None:
         sys.exit(args.painted + ": no vertex colours")
-    colours /= 255.0
+    else:
+        colours /= 255.0
     field = np.loadtxt(args.field).reshape(-1, 3)
     if len(field) != len(vertices):
         sys.exit("%s: %d directions for %d vertices" % (args.field, len(field), len(vertices)))

@@ -77,16 +77,17 @@ def read_pgm(path):
     return np.array(words[4:4 + width * height], dtype=float) / top
 
 
-def segment_distance(p, a, b):
+def segment_closest(p, a, b):
     ab = b - a
     t = np.einsum("ijk,ijk->ij", p - a, ab) / np.maximum(np.einsum("ijk,ijk->ij", ab, ab), 1e-300)
     t = np.clip(t, 0.0, 1.0)
-    return np.linalg.norm(p - (a + t[..., None] * ab), axis=2)
+    q = a + t[..., None] * ab
+    return np.linalg.norm(p - q, axis=2), q
 
 
-def point_triangle_distances(points, a, b, c):
-    """|points| x |triangles| distances: to the plane where the projection falls inside, else to
-    the nearest edge."""
+def point_triangle_closest(points, a, b, c):
+    """|points| x |triangles| distances and closest points: on the plane where the projection
+    falls inside, else on the nearest edge."""
     p = points[:, None, :]
     a, b, c = a[None], b[None], c[None]
     n = np.cross(b - a, c - a)
@@ -98,13 +99,21 @@ def point_triangle_distances(points, a, b, c):
     for u, v in ((a, b), (b, c), (c, a)):
         inside &= np.einsum("ijk,ijk->ij", np.cross(v - u, q - u), unit) >= 0.0
     inside &= length[..., 0] > 0.0
-    edges = np.minimum(np.minimum(segment_distance(p, a, b), segment_distance(p, b, c)), segment_distance(p, c, a))
-    return np.where(inside, np.abs(height), edges)
+    best, closest = np.abs(height), q
+    edge_best = np.full(height.shape, np.inf)
+    edge_closest = np.zeros(q.shape)
+    for u, v in ((a, b), (b, c), (c, a)):
+        d, e = segment_closest(p, u, v)
+        better = d < edge_best
+        edge_best = np.where(better, d, edge_best)
+        edge_closest = np.where(better[..., None], e, edge_closest)
+    return np.where(inside, best, edge_best), np.where(inside[..., None], closest, edge_closest)
 
 
-def surface_distances(points, vertices, faces, reach):
-    """Distance from each point to the nearest face, for points within `reach` of the surface:
-    faces are bucketed by their boxes grown by `reach` in a grid of cells `reach` wide."""
+def surface_closest(points, vertices, faces, reach):
+    """Distance from each point to the nearest face, and the nearest point, for points within
+    `reach` of the surface: faces are bucketed by their boxes grown by `reach` in a grid of cells
+    `reach` wide."""
     corners = vertices[faces]
     lo = corners.min(axis=1) - reach
     hi = corners.max(axis=1) + reach
@@ -120,6 +129,7 @@ def surface_distances(points, vertices, faces, reach):
     cell = np.floor((points - origin) / reach).astype(int)
     order = np.lexsort((cell[:, 2], cell[:, 1], cell[:, 0]))
     result = np.full(len(points), np.inf)
+    feet = np.array(points, dtype=float)
     start = 0
     while start < len(order):
         key = tuple(cell[order[start]])
@@ -130,10 +140,16 @@ def surface_distances(points, vertices, faces, reach):
         near = buckets.get(key)
         if near:
             near = np.array(near)
-            d = point_triangle_distances(points[members], corners[near, 0], corners[near, 1], corners[near, 2])
-            result[members] = d.min(axis=1)
+            d, q = point_triangle_closest(points[members], corners[near, 0], corners[near, 1], corners[near, 2])
+            best = d.argmin(axis=1)
+            result[members] = d[np.arange(len(members)), best]
+            feet[members] = q[np.arange(len(members)), best]
         start = end
-    return result
+    return result, feet
+
+
+def surface_distances(points, vertices, faces, reach):
+    return surface_closest(points, vertices, faces, reach)[0]
 
 
 def ks_distance(x, y):
