@@ -34,13 +34,19 @@ class CentroidSet {
   explicit CentroidSet(std::vector<ElementShape> shapes) : shapes_(std::move(shapes)) {
     lo_ = glm::dvec2(std::numeric_limits<double>::max());
     hi_ = -lo_;
+    // Elements whose centroids all but coincide (the two rings of a 2-in-2 link) are one place:
+    // a step between them, a small fraction of an element's size, is no period.
+    std::vector<double> sizes;
+    for (const ElementShape& shape : shapes_) sizes.push_back(std::sqrt(shape.moments[0][0] + shape.moments[1][1]));
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    const double same_place = sizes.empty() ? 0.0 : 0.05 * sizes[sizes.size() / 2];
     double nearest = std::numeric_limits<double>::max();
     for (size_t i = 0; i < shapes_.size(); ++i) {
       lo_ = glm::min(lo_, shapes_[i].centre);
       hi_ = glm::max(hi_, shapes_[i].centre);
       for (size_t j = 0; j < i; ++j) {
         const double d = glm::distance(shapes_[i].centre, shapes_[j].centre);
-        if (d > 0.0) nearest = std::min(nearest, d);
+        if (d > same_place) nearest = std::min(nearest, d);
       }
     }
     tolerance_ = nearest < std::numeric_limits<double>::max() ? 0.1 * nearest : 0.0;
@@ -72,20 +78,35 @@ class CentroidSet {
   double tolerance_ = 0.0;
 };
 
+// The convex hull of points, counter-clockwise (Andrew's monotone chain).
+std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points) {
+  std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (points.size() < 3) return points;
+  std::vector<glm::dvec2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 // Points of the swatch's surface, and whether a map of the plane (z kept) puts them back on it:
 // a yarn moved by a period lies along another yarn, not on its centroid, so a weave's periods
 // show in its surface only.
 class SurfaceSamples {
  public:
-  explicit SurfaceSamples(const QuiltSwatch& swatch) : bvh_(swatch.mesh) {
+  explicit SurfaceSamples(const QuiltSwatch& swatch) : mesh_(swatch.mesh), bvh_(swatch.mesh) {
     const size_t n = swatch.mesh.positions.size();
     const size_t stride = std::max<size_t>(1, n / 3000);
-    lo_ = glm::dvec2(std::numeric_limits<double>::max());
-    hi_ = -lo_;
-    for (const Vec3& p : swatch.mesh.positions) {
-      lo_ = glm::min(lo_, glm::dvec2(p));
-      hi_ = glm::max(hi_, glm::dvec2(p));
-    }
+    std::vector<glm::dvec2> footprint;
+    for (const Vec3& p : swatch.mesh.positions) footprint.emplace_back(p);
+    hull_ = convex_hull(std::move(footprint));
     for (size_t i = 0; i < n; i += stride) points_.push_back(swatch.mesh.positions[i]);
     tolerance_ = 0.05 * swatch.mean_edge;
     // Elements end at the border, in caps or cut ends that the pattern inside has not.
@@ -94,11 +115,48 @@ class SurfaceSamples {
 
   size_t size() const { return points_.size(); }
 
+  //! The map p -> turned(p, angle) + shift, its shift refined so the samples fall back on the
+  //! surface: point-to-plane steps on the shift alone, from the nearest points within `reach`.
+  //! A period measured between centroids of jittered or unevenly sampled elements is off by more
+  //! than the surface allows (a crimped wire moved along itself leaves its own surface).
+  glm::dvec2 refined_shift(double angle, glm::dvec2 shift, double reach) const {
+    for (int round = 0; round < 8; ++round) {
+      double a11 = 0.0, a12 = 0.0, a22 = 0.0, b1 = 0.0, b2 = 0.0;
+      for (const Vec3& p : points_) {
+        const glm::dvec2 q = turned(glm::dvec2(p), angle) + shift;
+        if (outside(q)) continue;
+        const Vec3 at(q, p.z);
+        const ClosestPoint hit = bvh_.closest_point(at, reach);
+        if (hit.face < 0) continue;
+        const Tri& t = mesh_.triangles[hit.face];
+        const Vec3 normal = glm::cross(mesh_.positions[t[1]] - mesh_.positions[t[0]], mesh_.positions[t[2]] - mesh_.positions[t[0]]);
+        if (!(glm::length(normal) > 0.0)) continue;
+        const Vec3 n = glm::normalize(normal);
+        const double r = glm::dot(n, hit.point - at);
+        a11 += n.x * n.x;
+        a12 += n.x * n.y;
+        a22 += n.y * n.y;
+        b1 += n.x * r;
+        b2 += n.y * r;
+      }
+      // Damped: a direction no sample's normal sees (a straight wire along itself) stays put.
+      const double damping = 1e-3 * (a11 + a22);
+      a11 += damping;
+      a22 += damping;
+      const double det = a11 * a22 - a12 * a12;
+      if (!(det > 0.0)) break;
+      const glm::dvec2 step((a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det);
+      shift += step;
+      if (glm::length(step) < 0.01 * tolerance_) break;
+    }
+    return shift;
+  }
+
   MapScore score(const std::function<glm::dvec2(const glm::dvec2&)>& map) const {
     MapScore s;
     for (const Vec3& p : points_) {
       const glm::dvec2 q = map(glm::dvec2(p));
-      if (q.x < lo_.x + margin_ || q.y < lo_.y + margin_ || q.x > hi_.x - margin_ || q.y > hi_.y - margin_) continue;
+      if (outside(q)) continue;
       ++s.landed;
       if (bvh_.closest_point(Vec3(q, p.z), tolerance_).face >= 0) ++s.matched;
     }
@@ -106,9 +164,20 @@ class SurfaceSamples {
   }
 
  private:
+  // Off the swatch's footprint (its convex hull: a turned swatch's box has bare corners), or
+  // within the margin of its edge.
+  bool outside(const glm::dvec2& q) const {
+    for (size_t k = 0; k < hull_.size(); ++k) {
+      const glm::dvec2 a = hull_[k], e = hull_[(k + 1) % hull_.size()] - a;
+      if (cross(e, q - a) < margin_ * glm::length(e)) return true;
+    }
+    return hull_.size() < 3;
+  }
+
+  const TriMesh& mesh_;
   FaceBvh bvh_;
   std::vector<Vec3> points_;
-  glm::dvec2 lo_{0.0}, hi_{0.0};
+  std::vector<glm::dvec2> hull_;  // counter-clockwise
   double tolerance_ = 0.0, margin_ = 0.0;
 };
 
@@ -164,7 +233,17 @@ std::optional<SwatchLattice> surface_lattice(const QuiltSwatch& swatch, const Ce
   const std::vector<ElementShape>& shapes = set.shapes();
   const SurfaceSamples samples(swatch);
   const auto holds = [&](const MapScore& score) {
-    return score.matched >= 0.9 * score.landed && 4 * static_cast<size_t>(score.landed) >= samples.size();
+    return score.matched >= 0.85 * score.landed && 4 * static_cast<size_t>(score.landed) >= samples.size();
+  };
+  // A map that puts a fair share of the samples back is refined before it is judged.
+  const auto exact_shift = [&](double angle, const glm::dvec2& shift) -> std::optional<glm::dvec2> {
+    const auto map = [&](const glm::dvec2& s) { return [&, s](const glm::dvec2& p) { return turned(p, angle) + s; }; };
+    const MapScore raw = samples.score(map(shift));
+    if (holds(raw)) return shift;
+    if (raw.matched < 0.2 * raw.landed) return std::nullopt;
+    const glm::dvec2 refined = samples.refined_shift(angle, shift, set.tolerance());
+    if (holds(samples.score(map(refined)))) return refined;
+    return std::nullopt;
   };
   std::vector<glm::dvec2> steps;
   for (const ElementShape& a : shapes)
@@ -177,15 +256,16 @@ std::optional<SwatchLattice> surface_lattice(const QuiltSwatch& swatch, const Ce
   std::sort(steps.begin(), steps.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return glm::length(a) < glm::length(b); });
   std::optional<glm::dvec2> first;
   std::optional<SwatchLattice> lattice;
-  for (const glm::dvec2& step : steps) {
-    if (first && std::abs(cross(*first, step)) <= 0.2 * glm::length(*first) * glm::length(step)) continue;
-    if (!holds(samples.score([&](const glm::dvec2& p) { return p + step; }))) continue;
+  for (const glm::dvec2& centroid_step : steps) {
+    if (first && std::abs(cross(*first, centroid_step)) <= 0.2 * glm::length(*first) * glm::length(centroid_step)) continue;
+    const std::optional<glm::dvec2> step = exact_shift(0.0, centroid_step);
+    if (!step) continue;
     if (!first) {
       first = step;
       continue;
     }
     lattice = SwatchLattice{};
-    lattice->basis = cross(*first, step) > 0.0 ? std::array<glm::dvec2, 2>{*first, step} : std::array<glm::dvec2, 2>{step, *first};
+    lattice->basis = cross(*first, *step) > 0.0 ? std::array<glm::dvec2, 2>{*first, *step} : std::array<glm::dvec2, 2>{*step, *first};
     break;
   }
   if (!lattice || symmetry <= 1) return lattice;
@@ -202,13 +282,17 @@ std::optional<SwatchLattice> surface_lattice(const QuiltSwatch& swatch, const Ce
       if (std::any_of(tried.begin(), tried.end(), [&](const glm::dvec2& c) { return glm::distance(c, centre) <= set.tolerance(); }))
         continue;
       tried.push_back(centre);
-      const MapScore score = samples.score([&](const glm::dvec2& p) { return centre + turned(p - centre, angle); });
-      if (!holds(score)) continue;
-      const double distance = glm::distance(centre, set.middle());
+      // p -> c + R (p - c) is R p + (c - R c): its shift refined, the centre (I - R)^-1 of it.
+      const glm::dvec2 centroid_shift = centre - turned(centre, angle);
+      const std::optional<glm::dvec2> shift = exact_shift(angle, centroid_shift);
+      if (!shift) continue;
+      const glm::dvec2 exact = *shift == centroid_shift ? centre : turn_centre(glm::dvec2(0.0), *shift, angle);
+      const MapScore score = samples.score([&](const glm::dvec2& p) { return exact + turned(p - exact, angle); });
+      const double distance = glm::distance(exact, set.middle());
       if (score.matched > best_matched || (score.matched == best_matched && distance < best_distance)) {
         best_matched = score.matched;
         best_distance = distance;
-        lattice->centre = centre;
+        lattice->centre = exact;
       }
     }
   if (best_matched < 0) return std::nullopt;

@@ -213,6 +213,9 @@ class SurfaceDriver {
       k_lo = glm::min(k_lo, k);
       k_hi = glm::max(k_hi, k);
     }
+    // A lattice finer than the candidates' spacing by far would list more placements than there
+    // are inputs to place: the candidates stay as matching chose them.
+    if ((k_hi.x - k_lo.x + 1.0) * (k_hi.y - k_lo.y + 1.0) > 1e5) return;
     const double slack = 1e-9 * cell_;
     std::vector<glm::dvec2> placements;
     for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1)

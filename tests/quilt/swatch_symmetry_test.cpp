@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -202,6 +203,32 @@ TEST(SwatchLattice, ThePlainWeaveRepeatsAlongAndAcrossItsYarns) {
   // Not every step between two yarns is one: half a period puts a warp where its neighbour is,
   // over where the neighbour goes under.
   EXPECT_FALSE(maps_onto_itself([&](const glm::dvec2& p) { return p + 0.5 * lattice->basis[0]; }));
+}
+
+// The plain weave as another tool might write it: turned 230 degrees about z, every vertex
+// jittered by up to 0.3% of the pitch. Centroids of jittered yarns put a period off by more than
+// the surface allows, and the turned swatch's box has bare corners: its periods and half-turn
+// centre are found on its surface all the same.
+TEST(SwatchLattice, ATurnedJitteredWeaveRepeatsAsTheWeave) {
+  TriMesh weave = make_weave(WeaveOptions{});
+  const double angle = 230.0 * 3.14159265358979323846 / 180.0;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.003, 0.003);
+  for (Vec3& p : weave.positions) {
+    p = Vec3(std::cos(angle) * p.x - std::sin(angle) * p.y, std::sin(angle) * p.x + std::cos(angle) * p.y, p.z);
+    p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  }
+  const std::optional<SwatchLattice> lattice = swatch_lattice(prepare_swatch(weave), 2);
+  ASSERT_TRUE(lattice.has_value());
+  // The weave's own periods, (2, 0) and (0, 2) pitches, turned: the basis spans that lattice.
+  const glm::dvec2 u(std::cos(angle), std::sin(angle)), v(-std::sin(angle), std::cos(angle));
+  const auto& [a, b] = lattice->basis;
+  for (const glm::dvec2& period : {a, b}) {
+    const glm::dvec2 k(glm::dot(period, u) / 2.0, glm::dot(period, v) / 2.0);
+    EXPECT_NEAR(k.x, std::round(k.x), 0.02) << period.x << " " << period.y;
+    EXPECT_NEAR(k.y, std::round(k.y), 0.02) << period.x << " " << period.y;
+  }
+  EXPECT_NEAR(std::abs(a.x * b.y - a.y * b.x), 4.0, 0.1);
 }
 
 }  // namespace
