@@ -9,11 +9,7 @@ set -euo pipefail
 meshquilt=$1 meshes=$2 work=$3
 here=$(dirname "$0")
 [ -f "$meshes/plane.off" ] || { echo "skipped: $meshes not found"; exit 77; }
-python=""
-for candidate in python3 /usr/bin/python3; do
-  if "$candidate" -c "import numpy" 2>/dev/null; then python=$candidate; break; fi
-done
-[ -n "$python" ] || { echo "skipped: no Python with numpy (Debian: apt-get install python3-numpy)"; exit 77; }
+source "$(dirname "$0")/numpy_python.sh"
 mkdir -p "$work"
 "$python" "$here/paint_samples.py" "$work" 5
 echo '{"directions": [{"point": [0, 0, 0], "direction": [0.7071068, 0, 0.7071068]}]}' > "$work/field.json"

@@ -6,11 +6,7 @@
 set -euo pipefail
 meshquilt=$1 meshes=$2 work=$3
 [ -f "$meshes/armadillo.off" ] && [ -f "$meshes/bunny.off" ] || { echo "skipped: $meshes not found"; exit 77; }
-python=""
-for candidate in python3 /usr/bin/python3; do
-  if "$candidate" -c "import numpy" 2>/dev/null; then python=$candidate; break; fi
-done
-[ -n "$python" ] || { echo "skipped: no Python with numpy (Debian: apt-get install python3-numpy)"; exit 77; }
+source "$(dirname "$0")/numpy_python.sh"
 mkdir -p "$work"
 # The detail's own height, scaled as its width is, is more than the bunny's creases hold (at the
 # default --scale 0.25, 4.8% of its diagonal: 35% of the vertices lowered, KS 0.28; at 0.1,
