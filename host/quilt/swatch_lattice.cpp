@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh/convex_outline.h"
 #include "quilt/swatch_symmetry.h"
 #include "spatial/face_bvh.h"
 
@@ -78,24 +79,6 @@ class CentroidSet {
   double tolerance_ = 0.0;
 };
 
-// The convex hull of points, counter-clockwise (Andrew's monotone chain).
-std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> points) {
-  std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  if (points.size() < 3) return points;
-  std::vector<glm::dvec2> hull(2 * points.size());
-  size_t k = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  return hull;
-}
-
 // Points of the swatch's surface, and whether a map of the plane (z kept) puts them back on it:
 // a yarn moved by a period lies along another yarn, not on its centroid, so a weave's periods
 // show in its surface only.
@@ -104,9 +87,7 @@ class SurfaceSamples {
   explicit SurfaceSamples(const QuiltSwatch& swatch) : mesh_(swatch.mesh), bvh_(swatch.mesh) {
     const size_t n = swatch.mesh.positions.size();
     const size_t stride = std::max<size_t>(1, n / 3000);
-    std::vector<glm::dvec2> footprint;
-    for (const Vec3& p : swatch.mesh.positions) footprint.emplace_back(p);
-    hull_ = convex_hull(std::move(footprint));
+    footprint_ = ConvexOutline(swatch.mesh.positions);
     for (size_t i = 0; i < n; i += stride) points_.push_back(swatch.mesh.positions[i]);
     tolerance_ = 0.05 * swatch.mean_edge;
     // Elements end at the border, in caps or cut ends that the pattern inside has not.
@@ -164,20 +145,14 @@ class SurfaceSamples {
   }
 
  private:
-  // Off the swatch's footprint (its convex hull: a turned swatch's box has bare corners), or
+  // Off the swatch's footprint (its convex outline: a turned swatch's box has bare corners), or
   // within the margin of its edge.
-  bool outside(const glm::dvec2& q) const {
-    for (size_t k = 0; k < hull_.size(); ++k) {
-      const glm::dvec2 a = hull_[k], e = hull_[(k + 1) % hull_.size()] - a;
-      if (cross(e, q - a) < margin_ * glm::length(e)) return true;
-    }
-    return hull_.size() < 3;
-  }
+  bool outside(const glm::dvec2& q) const { return !footprint_.contains(q, -margin_); }
 
   const TriMesh& mesh_;
   FaceBvh bvh_;
   std::vector<Vec3> points_;
-  std::vector<glm::dvec2> hull_;  // counter-clockwise
+  ConvexOutline footprint_;
   double tolerance_ = 0.0, margin_ = 0.0;
 };
 
