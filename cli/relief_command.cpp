@@ -71,8 +71,8 @@ std::string grey_pgm(const ColourImage& image) {
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
       const glm::dvec3& c = image.at(x, y);
-      const double luma = std::clamp(0.299 * c.r + 0.587 * c.g + 0.114 * c.b, 0.0, 1.0);
-      text += std::to_string(std::lround(65535.0 * luma)) + (x + 1 < image.width ? " " : "\n");
+      const double grey = std::clamp(luma(c), 0.0, 1.0);
+      text += std::to_string(std::lround(65535.0 * grey)) + (x + 1 < image.width ? " " : "\n");
     }
   }
   return text;

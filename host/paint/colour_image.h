@@ -22,6 +22,10 @@ struct ColourImage {
   glm::dvec3 sample(const glm::dvec2& p) const;
 };
 
+//! The grey a colour reads as (Rec. 601 luma): what relief raises, and what its sample is
+//! written as.
+inline double luma(const glm::dvec3& rgb) { return 0.299 * rgb.r + 0.587 * rgb.g + 0.114 * rgb.b; }
+
 //! Reads a PNG (any colour type, through libpng; alpha dropped) or a Netpbm file (PPM in
 //! colour, PGM and PBM as grey).
 //! \throw IoError(file_unreadable) "FILE: problem" for a missing, unreadable or corrupt file;

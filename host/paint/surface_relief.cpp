@@ -39,7 +39,7 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   std::vector<Vec3> moved(n);
   for (size_t v = 0; v < n; ++v) {
     const auto& c = mesh.colors[v];
-    const double signal = (0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]) / 255.0;
+    const double signal = luma(glm::dvec3(c[0], c[1], c[2])) / 255.0;
     double h = options.height * signal;
     const Vec3& p = mesh.positions[v];
     const Vec3& normal = surface.vertex_normals[v];
