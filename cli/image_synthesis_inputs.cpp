@@ -1,11 +1,13 @@
 #include "image_synthesis_inputs.h"
 
 #include <cstdio>
+#include <iostream>
 
 #include <glm/geometric.hpp>
 
 #include "atomic_file.h"
 #include "core/error.h"
+#include "exit_codes.h"
 #include "mesh/base_mesh.h"
 #include "mesh/measures.h"
 #include "mesh/mesh_io.h"
@@ -37,6 +39,13 @@ void write_field_lines(const std::string& file, const std::vector<Vec3>& directi
     lines += line;
   }
   write_text_atomic(file, lines);
+}
+
+std::unique_ptr<engine::Device> open_synthesis_device(const std::string& backend) {
+  std::string note;
+  std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend), &note);
+  if (!note.empty()) std::cerr << "meshquilt: " << with_options(note) << "\n";
+  return device;
 }
 
 }  // namespace meshquilt::cli

@@ -2,9 +2,11 @@
 // What `paint` and `relief` read (the base, the image sample, the field and the sample's scale),
 // and the field they write back with --write-field.
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "device.h"
 #include "mesh/tri_mesh.h"
 #include "paint/colour_image.h"
 #include "surface/guidance_field.h"
@@ -26,6 +28,11 @@ struct ImageSynthesisInputs {
 ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
                                                  const std::string& field, double scale, double pixels_per_unit,
                                                  const std::string& output, const std::string& stats);
+
+//! The device of --backend (auto|vulkan|cpu) that scores neighbourhoods; why `auto` chose the
+//! CPU, if it says, goes to stderr.
+//! \throw InputError for another value; DeviceError when `vulkan` has no device.
+std::unique_ptr<engine::Device> open_synthesis_device(const std::string& backend);
 
 //! Writes one "x y z" line per direction (the field at each output vertex), atomically.
 void write_field_lines(const std::string& file, const std::vector<Vec3>& directions);

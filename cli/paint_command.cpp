@@ -18,7 +18,7 @@ namespace meshquilt::cli {
 namespace {
 
 struct PaintArgs {
-  std::string base, image, output, field, stats, write_field;
+  std::string base, image, output, field, stats, write_field, backend = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   PaintOptions options;
@@ -30,7 +30,8 @@ void run_paint(PaintArgs& args) {
   const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
                                                                args.pixels_per_unit, args.output, args.stats);
   args.options.pixels_per_unit = in.pixels_per_unit;
-  const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options);
+  const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
+  const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options, *device);
   write_mesh(painted.mesh, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::json summary = {{"base", args.base},
@@ -42,6 +43,8 @@ void run_paint(PaintArgs& args) {
                                   {"vertices", painted.mesh.num_vertices()},
                                   {"faces", painted.mesh.num_faces()},
                                   {"mean_cost", painted.mean_cost},
+                                  {"backend", engine::backend_name(device->backend())},
+                                  {"device", device->name()},
                                   {"seconds", seconds}};
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   if (!args.write_field.empty()) write_field_lines(args.write_field, painted.directions);
@@ -67,6 +70,7 @@ void add_paint_command(CLI::App& app) {
   cmd->add_option("--passes", args->options.passes, "the sweep, then passes over whole neighbourhoods")
       ->capture_default_str();
   cmd->add_option("--seed", args->options.seed, "seed of every random choice")->capture_default_str();
+  cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
   cmd->add_option("--write-field", args->write_field,
                   "write the field each output vertex was painted along, one 'x y z' line per vertex");

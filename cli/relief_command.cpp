@@ -28,7 +28,7 @@ namespace meshquilt::cli {
 namespace {
 
 struct ReliefArgs {
-  std::string base, image, output, field, stats, write_sample, write_field;
+  std::string base, image, output, field, stats, write_sample, write_field, backend = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   ReliefOptions options;
@@ -92,7 +92,8 @@ void run_relief(ReliefArgs& args, bool height_given) {
   if (!args.model.empty()) from = sample_from_model(args, in, height_given, args.pixels_per_unit > 0.0);
   args.options.paint.pixels_per_unit = in.pixels_per_unit;
   if (!args.write_sample.empty()) write_text_atomic(args.write_sample, grey_pgm(in.sample));
-  const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options);
+  const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
+  const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options, *device);
   write_mesh(relief.mesh, args.output);
   if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -109,6 +110,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
                                   {"highest", highest},
                                   {"clamped_vertices", relief.clamped},
                                   {"crossing_lowered_vertices", relief.lowered_crossing},
+                                  {"backend", engine::backend_name(device->backend())},
                                   {"seconds", seconds}};
   if (!from.is_null()) summary["from"] = from;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
@@ -147,6 +149,7 @@ void add_relief_command(CLI::App& app) {
   cmd->add_option("--window", args->options.paint.window, "neighbourhood width in pixels, odd, 3..21")
       ->capture_default_str();
   cmd->add_option("--seed", args->options.paint.seed, "seed of every random choice")->capture_default_str();
+  cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
   cmd->add_option("--write-sample", args->write_sample, "write the height sample used (grey, 16-bit PGM)");
   cmd->add_option("--write-field", args->write_field,

@@ -3,16 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
 #include "mesh/measures.h"
+#include "paint/sweep_batches.h"
 #include "paint/sweep_order.h"
+#include "neighbourhood_cost.h"
 #include "surface/base_layout.h"
 #include "surface/surface_types.h"
 
@@ -31,6 +33,7 @@ void check(const TriMesh& base, const ColourImage& sample, const PaintOptions& o
   if (o.random_candidates < 0 || o.random_candidates > 64)
     throw InputError("{random_candidates}: expected 0..64", ErrorKind::invalid_option);
   if (o.passes < 1 || o.passes > 8) throw InputError("{passes}: expected 1..8", ErrorKind::invalid_option);
+  if (o.max_batch < 1) throw InputError("{max_batch}: expected at least 1", ErrorKind::invalid_option);
 }
 
 // Splits until the mean edge is at most one sample pixel.
@@ -97,54 +100,55 @@ struct Neighbour {
   double weight;
 };
 
+// The k-th uniform number in [0, 1) of a vertex's visit: drawn from the vertex, the level and
+// the pass alone (splitmix64), so that batches running side by side draw what the sweep draws.
+double uniform(uint64_t seed, uint64_t vertex, uint64_t pass, uint64_t k) {
+  uint64_t z = seed * 0x9e3779b97f4a7c15ULL ^ (vertex << 20 ^ pass << 8 ^ k) * 0xd1b54a32d192ed03ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1p-53;
+}
+
 class Painter {
  public:
   Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const ColourImage& sample,
-          double pixels_per_unit, const PaintOptions& options, uint64_t seed)
+          engine::Device& device, double pixels_per_unit, const PaintOptions& options, uint64_t seed)
       : surface_(surface),
         directions_(directions),
         sample_(sample),
+        cost_(device, sample.width, sample.height, float_pixels(sample)),
         options_(options),
         pixels_per_unit_(pixels_per_unit),
-        rng_(seed) {
+        seed_(seed) {
     const size_t n = surface.mesh.num_vertices();
     colour_.assign(n, glm::dvec3(0.0));
     source_.assign(n, glm::dvec2(0.0));
     done_.assign(n, 0);
-    seen_.assign(n, 0);
-    radius_ = 0.5 * options.window / pixels_per_unit;
+    windows_ = window_neighbours(surface, 0.5 * options.window / pixels_per_unit);
     sigma2_ = std::pow(0.25 * options.window, 2.0);
   }
 
-  // One visit: the best candidate for v given the neighbours coloured so far (or all of them).
-  double visit(int32_t v, bool whole) {
-    gather(v, whole);
-    std::vector<glm::dvec2> candidates;
-    for (const Neighbour& u : neighbours_) candidates.push_back(source_[u.vertex] - u.offset);
-    if (done_[v]) candidates.push_back(source_[v]);
-    std::uniform_real_distribution<double> x(0.0, sample_.width), y(0.0, sample_.height);
-    const int random = candidates.empty() ? 1 : options_.random_candidates;
-    for (int k = 0; k < random; ++k) candidates.emplace_back(x(rng_), y(rng_));
-    double best = std::numeric_limits<double>::infinity();
-    glm::dvec2 chosen = candidates.front();
-    for (const glm::dvec2& c : candidates) {
-      double cost = 0.0;
-      for (const Neighbour& u : neighbours_) {
-        const glm::dvec3 d = colour_[u.vertex] - sample_.sample(c + u.offset);
-        cost += u.weight * glm::dot(d, d);
-        if (cost >= best) break;
-      }
-      if (cost < best) {
-        best = cost;
-        chosen = c;
+  // One pass over `order`, in batches of vertices whose windows do not reach each other: each
+  // vertex takes the candidate whose neighbourhood best matches its coloured neighbours' (or all
+  // of them, when `whole`). Returns the summed mean mismatch per neighbour.
+  double pass(const std::vector<int32_t>& order, bool whole, uint64_t pass_index) {
+    double cost = 0.0;
+    for (const std::vector<int32_t>& batch : sweep_batches(order, windows_, options_.max_batch)) {
+      work_.clear();
+      visits_.clear();
+      neighbours_.clear();
+      candidates_.clear();
+      for (int32_t v : batch) prepare(v, whole, pass_index);
+      const std::vector<float> costs = cost_.score(work_);
+      for (Visit& visit : visits_) cost += choose(visit, costs);
+      for (const Visit& visit : visits_) {
+        source_[visit.vertex] = wrap(visit.chosen);
+        colour_[visit.vertex] = sample_.sample(source_[visit.vertex]);
+        done_[visit.vertex] = 1;
       }
     }
-    source_[v] = wrap(chosen);
-    colour_[v] = sample_.sample(source_[v]);
-    done_[v] = 1;
-    double weights = 0.0;
-    for (const Neighbour& u : neighbours_) weights += u.weight;
-    return weights > 0.0 ? best / weights : 0.0;
+    return cost;
   }
 
   // Every vertex starts from a sample position (a coarser level's, carried over): coloured there.
@@ -160,55 +164,139 @@ class Painter {
   const std::vector<glm::dvec2>& sources() const { return source_; }
 
  private:
+  // A vertex of the batch: its neighbours_ and candidates_ ranges, the candidates' in the
+  // kernel's list, and what it chose.
+  struct Visit {
+    int32_t vertex;
+    size_t neighbours, neighbours_end, candidates, candidates_end;
+    glm::dvec2 chosen;
+  };
+
+  static std::vector<glm::vec4> float_pixels(const ColourImage& sample) {
+    std::vector<glm::vec4> pixels;
+    pixels.reserve(sample.rgb.size());
+    for (const glm::dvec3& c : sample.rgb) pixels.emplace_back(glm::vec3(c), 0.0f);
+    return pixels;
+  }
+
   glm::dvec2 wrap(const glm::dvec2& p) const {
     return {p.x - sample_.width * std::floor(p.x / sample_.width), p.y - sample_.height * std::floor(p.y / sample_.height)};
   }
 
-  // The vertices within the window's radius of v (through edges, by distance in space), coloured
-  // ones only unless `whole`, in v's frame: x along the field, y along normal x field.
+  // The visit's neighbours and candidates, in double for the choice and in float for the kernel.
+  void prepare(int32_t v, bool whole, uint64_t pass_index) {
+    Visit visit{v, neighbours_.size(), 0, candidates_.size(), 0, {}};
+    gather(v, whole);
+    visit.neighbours_end = neighbours_.size();
+    const auto first = static_cast<uint32_t>(work_.neighbours.size());
+    for (size_t k = visit.neighbours; k < visit.neighbours_end; ++k) {
+      const Neighbour& u = neighbours_[k];
+      const glm::dvec3& c = colour_[u.vertex];
+      work_.neighbours.push_back({glm::vec4(u.offset.x, u.offset.y, u.weight, 0.0), glm::vec4(glm::vec3(c), 0.0f)});
+    }
+    const auto index = static_cast<uint32_t>(work_.visits.size());
+    work_.visits.push_back({first, static_cast<uint32_t>(work_.neighbours.size() - first), 0, 0});
+    for (size_t k = visit.neighbours; k < visit.neighbours_end; ++k)
+      candidates_.push_back(source_[neighbours_[k].vertex] - neighbours_[k].offset);
+    if (done_[v]) candidates_.push_back(source_[v]);
+    const int random = candidates_.size() == visit.candidates ? 1 : options_.random_candidates;
+    for (int k = 0; k < random; ++k)
+      candidates_.emplace_back(sample_.width * uniform(seed_, v, pass_index, 2 * k),
+                               sample_.height * uniform(seed_, v, pass_index, 2 * k + 1));
+    // Neighbours of one coherent patch propose nearly the same position: one in each quarter
+    // pixel is scored, which leaves the choice to where the sample differs.
+    seen_.clear();
+    size_t kept = visit.candidates;
+    for (size_t k = visit.candidates; k < candidates_.size(); ++k) {
+      const glm::dvec2 p = wrap(candidates_[k]);
+      const auto key = [](double x) { return static_cast<uint64_t>(std::floor(x * 4.0)); };
+      if (seen_.insert(key(p.x) << 32 ^ key(p.y)).second) candidates_[kept++] = candidates_[k];
+    }
+    candidates_.resize(kept);
+    visit.candidates_end = candidates_.size();
+    for (size_t k = visit.candidates; k < visit.candidates_end; ++k) {
+      const glm::dvec2 p = wrap(candidates_[k]);
+      glm::ivec2 pixel(static_cast<int>(std::floor(p.x)), static_cast<int>(std::floor(p.y)));
+      glm::vec2 fraction(p - glm::dvec2(pixel));
+      // Rounding may put a position on the far border or a fraction at 1: both are the next pixel.
+      for (int axis = 0; axis < 2; ++axis) {
+        const int size = axis == 0 ? sample_.width : sample_.height;
+        if (fraction[axis] >= 1.0f) {
+          fraction[axis] = 0.0f;
+          ++pixel[axis];
+        }
+        if (pixel[axis] >= size) pixel[axis] -= size;
+      }
+      work_.candidates.push_back({pixel, fraction, index, 0});
+    }
+    visits_.push_back(visit);
+  }
+
+  // The candidate of least mismatch in double among those the kernel's float costs leave in
+  // reach of its best (a margin well above float rounding): what a search in double would choose.
+  double choose(Visit& visit, const std::vector<float>& costs) {
+    double weights = 0.0;
+    for (size_t k = visit.neighbours; k < visit.neighbours_end; ++k) weights += neighbours_[k].weight;
+    float least = std::numeric_limits<float>::infinity();
+    for (size_t k = visit.candidates; k < visit.candidates_end; ++k) least = std::min(least, costs[k]);
+    const double reach = static_cast<double>(least) + 1e-4 * (static_cast<double>(least) + weights);
+    double best = std::numeric_limits<double>::infinity();
+    visit.chosen = candidates_[visit.candidates];
+    for (size_t k = visit.candidates; k < visit.candidates_end; ++k) {
+      if (costs[k] > reach) continue;
+      double cost = 0.0;
+      for (size_t i = visit.neighbours; i < visit.neighbours_end; ++i) {
+        const Neighbour& u = neighbours_[i];
+        const glm::dvec3 d = colour_[u.vertex] - sample_.sample(candidates_[k] + u.offset);
+        cost += u.weight * glm::dot(d, d);
+      }
+      if (cost < best) {
+        best = cost;
+        visit.chosen = candidates_[k];
+      }
+    }
+    return weights > 0.0 ? best / weights : 0.0;
+  }
+
+  // The window neighbours of v, coloured ones only unless `whole`, in v's frame: x along the
+  // field, y along normal x field.
   void gather(int32_t v, bool whole) {
-    neighbours_.clear();
     const Vec3& p = surface_.mesh.positions[v];
     const Vec3& d = directions_[v];
     const Vec3 b = glm::normalize(glm::cross(surface_.vertex_normals[v], d));
-    ++stamp_;
-    frontier_.assign(1, v);
-    seen_[v] = stamp_;
-    for (size_t k = 0; k < frontier_.size(); ++k) {
-      for (const auto& [w, length] : surface_.edges[frontier_[k]]) {
-        (void)length;
-        if (seen_[w] == stamp_) continue;
-        seen_[w] = stamp_;
-        const Vec3 q = surface_.mesh.positions[w] - p;
-        if (glm::length(q) > radius_) continue;
-        frontier_.push_back(w);
-        if (!whole && !done_[w]) continue;
-        const glm::dvec2 offset = pixels_per_unit_ * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
-        neighbours_.push_back({w, offset, std::exp(-glm::dot(offset, offset) / (2.0 * sigma2_))});
-      }
+    for (int64_t k = windows_.first[v]; k < windows_.first[v + 1]; ++k) {
+      const int32_t w = windows_.vertices[k];
+      if (!whole && !done_[w]) continue;
+      const Vec3 q = surface_.mesh.positions[w] - p;
+      const glm::dvec2 offset = pixels_per_unit_ * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
+      neighbours_.push_back({w, offset, std::exp(-glm::dot(offset, offset) / (2.0 * sigma2_))});
     }
   }
 
   const BaseSurface& surface_;
   const std::vector<Vec3>& directions_;
   const ColourImage& sample_;
+  NeighbourhoodCost cost_;
   const PaintOptions& options_;
   double pixels_per_unit_;
-  std::mt19937_64 rng_;
+  uint64_t seed_;
+  WindowNeighbours windows_;
   std::vector<glm::dvec3> colour_;
   std::vector<glm::dvec2> source_;
   std::vector<uint8_t> done_;
-  std::vector<uint32_t> seen_;
-  uint32_t stamp_ = 0;
-  std::vector<int32_t> frontier_;
+  NeighbourhoodBatch work_;
+  std::vector<Visit> visits_;
   std::vector<Neighbour> neighbours_;
-  double radius_ = 0.0, sigma2_ = 1.0;
+  std::vector<glm::dvec2> candidates_;
+  std::unordered_set<uint64_t> seen_;
+  double sigma2_ = 1.0;
 };
 
 }  // namespace
 
 PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
-                          const std::vector<FieldConstraint>& constraints, const PaintOptions& options) {
+                          const std::vector<FieldConstraint>& constraints, const PaintOptions& options,
+                          engine::Device& device) {
   check(base, sample, options);
   PaintResult result;
   result.levels = refinement_levels(base, options);
@@ -234,15 +322,12 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     const double pixels_per_unit = std::ldexp(options.pixels_per_unit, -step);
     const BaseSurface surface(mesh);
     result.order = sweep_order(sweep_function(surface, directions));
-    Painter painter(surface, directions, pyramid[step], pixels_per_unit, options, options.seed + step);
+    Painter painter(surface, directions, pyramid[step], device, pixels_per_unit, options, options.seed + step);
     // The coarsest level is swept; a finer one starts from the coarser positions carried over
     // and is corrected with whole neighbourhoods.
     const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);
     if (step < coarsest) painter.start_from(sources);
-    for (int pass = 0; pass < passes; ++pass) {
-      cost = 0.0;
-      for (int32_t v : result.order) cost += painter.visit(v, pass > 0 || step < coarsest);
-    }
+    for (int pass = 0; pass < passes; ++pass) cost = painter.pass(result.order, pass > 0 || step < coarsest, pass);
     sources = painter.sources();
     if (step == 0) {
       result.mesh = std::move(mesh);

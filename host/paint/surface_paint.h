@@ -6,8 +6,10 @@
 //!
 //! Candidates come from the neighbours' own sample positions, each shifted by its offset
 //! (coherent synthesis, Ashikhmin 2001), plus a few at random: a search over a handful of
-//! positions instead of the whole sample. Turk's sweep is sequential, and so is this one. It runs
-//! coarse to fine: the sample halved while it holds more than a window, the sweep on the matching
+//! positions instead of the whole sample, scored on the compute engine (neighbourhood_cost) and
+//! chosen in double on the host, so both back ends choose alike. Turk's sweep is sequential; it
+//! runs here in batches of vertices out of each other's windows, which give the same colours
+//! (sweep_batches.h). It runs coarse to fine: the sample halved while it holds more than a window, the sweep on the matching
 //! coarse split level, each finer level started from the positions carried over and corrected.
 
 #include <cstdint>
@@ -15,6 +17,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "device.h"
 #include "mesh/tri_mesh.h"
 #include "paint/colour_image.h"
 #include "surface/guidance_field.h"
@@ -28,6 +31,7 @@ struct PaintOptions {
   int passes = 2;                 //!< the sweep, then passes over whole neighbourhoods (1..8)
   uint64_t seed = 1;              //!< of every random choice
   size_t max_vertices = 4000000;  //!< refuse a refinement past this many vertices
+  size_t max_batch = 4096;        //!< vertices scored in one dispatch; 1: the sweep one vertex at a time
 };
 
 struct PaintResult {
@@ -41,10 +45,11 @@ struct PaintResult {
 
 //! Paints `base` from `sample`, oriented by the guidance field of `constraints` (synth's
 //! --field; none: its default). Constraint vertices are the base's own (split_faces keeps them).
-//! Deterministic for a seed.
+//! Deterministic for a seed, and the same on either back end of `device`.
 //! \throw InputError(invalid_option) for options out of range or a refinement past max_vertices;
 //!        InputError(invalid_mesh) for a base without faces; SolverError from the solves.
 PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
-                          const std::vector<FieldConstraint>& constraints, const PaintOptions& options);
+                          const std::vector<FieldConstraint>& constraints, const PaintOptions& options,
+                          engine::Device& device);
 
 }  // namespace meshquilt

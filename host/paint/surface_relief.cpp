@@ -21,12 +21,13 @@ constexpr int kCrossingRounds = 12;
 }  // namespace
 
 ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
-                            const std::vector<FieldConstraint>& constraints, const ReliefOptions& options) {
+                            const std::vector<FieldConstraint>& constraints, const ReliefOptions& options,
+                            engine::Device& device) {
   if (!(options.height > 0.0) || !std::isfinite(options.height))
     throw InputError("{height}: expected a positive number of base units", ErrorKind::invalid_option);
   if (!(options.clearance > 0.0 && options.clearance < 1.0))
     throw InputError("{clearance}: expected a share in (0, 1)", ErrorKind::invalid_option);
-  const PaintResult painted = paint_surface(base, sample, constraints, options.paint);
+  const PaintResult painted = paint_surface(base, sample, constraints, options.paint, device);
   ReliefResult result;
   result.levels = painted.levels;
   result.mesh = painted.mesh;

@@ -31,6 +31,7 @@ struct ReliefResult {
 //! \throw InputError(invalid_option) for a height that is not positive and finite or a clearance
 //!        outside (0, 1); what paint_surface throws.
 ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
-                            const std::vector<FieldConstraint>& constraints, const ReliefOptions& options);
+                            const std::vector<FieldConstraint>& constraints, const ReliefOptions& options,
+                            engine::Device& device);
 
 }  // namespace meshquilt

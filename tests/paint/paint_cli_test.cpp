@@ -6,10 +6,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
 #include "mesh/mesh_io.h"
+#include "support/backends.h"
 #include "support/run_cli.h"
 #include "support/surface_fixtures.h"
 
@@ -51,6 +55,33 @@ TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
   EXPECT_NE(window.output.find("--window"), std::string::npos) << window.output;
   // The good output is left as it was.
   EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
+}
+
+TEST(PaintCli, BothBackEndsWriteTheSameFile) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_backends";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream image(dir / "sample.ppm", std::ios::binary);
+    image << "P6\n12 12\n255\n";
+    for (int y = 0; y < 12; ++y)
+      for (int x = 0; x < 12; ++x) image << static_cast<char>(20 * x) << static_cast<char>(19 * y) << static_cast<char>(13 * (x ^ y));
+  }
+  const auto run = [&](const std::string& backend) {
+    const std::string out = (dir / (backend + ".ply")).string();
+    const test::CliResult r = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
+                                            (dir / "sample.ppm").string() + " --scale 0.5 --backend " + backend + " -o " + out);
+    std::ifstream in(out, std::ios::binary);
+    return std::pair{r, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>())};
+  };
+  const auto [cpu, cpu_bytes] = run("cpu");
+  ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+  const auto [vulkan, vulkan_bytes] = run("vulkan");
+  if (vulkan.exit_code != 0) {
+    if (test::ci()) FAIL() << "CI=true and no Vulkan device: " << vulkan.output;
+    GTEST_SKIP() << "no Vulkan device: " << vulkan.output;
+  }
+  EXPECT_GT(cpu_bytes.size(), 1000u);
+  EXPECT_TRUE(cpu_bytes == vulkan_bytes);
 }
 
 TEST(ReliefCli, RaisesTheSphereAndRefusesBadInput) {

@@ -11,13 +11,17 @@
 
 #include "core/error.h"
 #include "paint/surface_paint.h"
+#include "paint/sweep_batches.h"
 #include "paint/sweep_order.h"
+#include "support/backends.h"
 #include "support/surface_fixtures.h"
 #include "surface/guidance_field.h"
 #include "surface/surface_types.h"
 
 namespace meshquilt {
 namespace {
+
+class SurfacePaint : public test::BackendTest {};
 
 std::vector<FieldConstraint> along(const TriMesh& mesh, const Vec3& d) {
   std::vector<FieldConstraint> constraints;
@@ -65,26 +69,26 @@ ColourImage stripes() {
   return image;
 }
 
-TEST(SurfacePaint, AConstantSampleGivesItsColourEverywhere) {
+TEST_P(SurfacePaint, AConstantSampleGivesItsColourEverywhere) {
   ColourImage image;
   image.width = image.height = 8;
   image.rgb.assign(64, glm::dvec3(0.2, 0.4, 0.6));
   PaintOptions options;
   options.pixels_per_unit = 8.0;
-  const PaintResult painted = paint_surface(test::icosphere(2), image, {}, options);
+  const PaintResult painted = paint_surface(test::icosphere(2), image, {}, options, device());
   EXPECT_GT(painted.levels, 0);
   ASSERT_EQ(painted.mesh.colors.size(), painted.mesh.num_vertices());
   for (const auto& c : painted.mesh.colors) EXPECT_EQ(c, (std::array<uint8_t, 3>{51, 102, 153}));
 }
 
-TEST(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
+TEST_P(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
   // A plane one sample pixel per grid step, the field along x: the painted colours are the
   // stripes at x * pixels_per_unit + phase for one phase, up to the blend at stripe borders.
   const TriMesh plane = test::flat_grid(40, 20, 1.0 / 16.0, 0.0);
   PaintOptions options;
   options.pixels_per_unit = 16.0;
   const ColourImage image = stripes();
-  const PaintResult painted = paint_surface(plane, image, along(plane, Vec3(1, 0, 0)), options);
+  const PaintResult painted = paint_surface(plane, image, along(plane, Vec3(1, 0, 0)), options, device());
   const auto colour = [](const PaintResult& p, size_t v) {
     const auto& c = p.mesh.colors[v];
     return glm::dvec3(c[0], c[1], c[2]) / 255.0;
@@ -112,11 +116,11 @@ TEST(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
     return static_cast<double>(same) / static_cast<double>(pairs);
   };
   EXPECT_NEAR(same_along_x(painted), 0.75, 0.05);
-  const PaintResult turned = paint_surface(plane, image, along(plane, Vec3(0, 1, 0)), options);
+  const PaintResult turned = paint_surface(plane, image, along(plane, Vec3(0, 1, 0)), options, device());
   EXPECT_GT(same_along_x(turned), 0.95);
 }
 
-TEST(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
+TEST_P(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
   // One direction held on a coarse plane: the field synth spreads over the base. Spread over the
   // refined mesh instead, it would turn back to the default within a few fine edges.
   const TriMesh plane = test::flat_grid(8, 8, 0.125, 0.0);
@@ -128,7 +132,7 @@ TEST(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
   image.rgb.assign(256, glm::dvec3(0.5));
   PaintOptions options;
   options.pixels_per_unit = 64.0;
-  const PaintResult painted = paint_surface(plane, image, held, options);
+  const PaintResult painted = paint_surface(plane, image, held, options, device());
   ASSERT_GE(painted.levels, 3);
   ASSERT_EQ(painted.directions.size(), painted.mesh.num_vertices());
   // The base's own vertices come first in the refined mesh and keep synth's directions; a
@@ -147,22 +151,97 @@ TEST(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
   }
 }
 
-TEST(SurfacePaint, IsDeterministicForASeedAndRefusesBadOptions) {
+TEST_P(SurfacePaint, IsDeterministicForASeedAndRefusesBadOptions) {
   const TriMesh sphere = test::icosphere(2);
   PaintOptions options;
   options.pixels_per_unit = 6.0;
   const ColourImage image = stripes();
-  const PaintResult a = paint_surface(sphere, image, {}, options);
-  const PaintResult b = paint_surface(sphere, image, {}, options);
+  const PaintResult a = paint_surface(sphere, image, {}, options, device());
+  const PaintResult b = paint_surface(sphere, image, {}, options, device());
   EXPECT_EQ(a.mesh.colors, b.mesh.colors);
   options.seed = 2;
-  EXPECT_NE(paint_surface(sphere, image, {}, options).mesh.colors, a.mesh.colors);
+  EXPECT_NE(paint_surface(sphere, image, {}, options, device()).mesh.colors, a.mesh.colors);
   options.window = 4;
-  EXPECT_THROW(paint_surface(sphere, image, {}, options), InputError);
+  EXPECT_THROW(paint_surface(sphere, image, {}, options, device()), InputError);
   options.window = 7;
   options.pixels_per_unit = 1e6;
-  EXPECT_THROW(paint_surface(sphere, image, {}, options), InputError);
+  EXPECT_THROW(paint_surface(sphere, image, {}, options, device()), InputError);
 }
+
+// Batches side by side give the sequential sweep's colours, and the back ends choose alike:
+// scored in float, the choice is made in double.
+TEST_P(SurfacePaint, BatchesAndBackEndsGiveTheSweepsColours) {
+  const TriMesh sphere = test::icosphere(2);
+  ColourImage image;
+  image.width = image.height = 24;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 24; ++x)
+      image.rgb.emplace_back(0.5 + 0.5 * std::sin(0.9 * x + 0.3 * y), 0.5 + 0.5 * std::cos(0.4 * x * y), (x ^ y) % 5 / 4.0);
+  PaintOptions options;
+  options.pixels_per_unit = 12.0;
+  options.max_batch = 1;
+  std::string why;
+  engine::Device* cpu = shared_device(engine::Backend::cpu, &why);
+  ASSERT_NE(cpu, nullptr) << why;
+  const PaintResult sequential = paint_surface(sphere, image, {}, options, *cpu);
+  options.max_batch = 4096;
+  const PaintResult batched = paint_surface(sphere, image, {}, options, device());
+  ASSERT_GE(sequential.levels, 2);
+  EXPECT_EQ(batched.source, sequential.source);
+  EXPECT_EQ(batched.mesh.colors, sequential.mesh.colors);
+  options.max_batch = 7;
+  EXPECT_EQ(paint_surface(sphere, image, {}, options, device()).source, sequential.source);
+}
+
+TEST(SweepBatches, RunSideBySideOnlyWhatTheSweepWouldNotTellApart) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface surface(sphere);
+  const WindowNeighbours windows = window_neighbours(surface, 0.3);
+  std::vector<Vec3> directions(sphere.num_vertices());
+  for (size_t v = 0; v < directions.size(); ++v) {
+    const Vec3 n = surface.vertex_normals[v];
+    directions[v] = glm::normalize(glm::cross(n, std::abs(n.z) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0)));
+  }
+  const std::vector<int32_t> order = sweep_order(sweep_function(surface, directions));
+  std::vector<int32_t> position(order.size());
+  for (size_t k = 0; k < order.size(); ++k) position[order[k]] = static_cast<int32_t>(k);
+  // Brute force: window neighbours from distances alone (the sphere's small windows are convex).
+  const auto within = [&](int32_t a, int32_t b) {
+    for (int64_t k = windows.first[a]; k < windows.first[a + 1]; ++k)
+      if (windows.vertices[k] == b) return true;
+    return false;
+  };
+  for (int32_t a = 0; a < 40; ++a)
+    for (int32_t b = 0; b < static_cast<int32_t>(sphere.num_vertices()); ++b) {
+      if (a != b) {
+        EXPECT_EQ(within(a, b), glm::distance(sphere.positions[a], sphere.positions[b]) <= 0.3) << a << " " << b;
+      }
+    }
+  const std::vector<std::vector<int32_t>> batches = sweep_batches(order, windows, 1000);
+  ASSERT_LT(batches.size(), order.size() / 4);  // side by side, not one at a time
+  std::vector<int32_t> batch_of(order.size(), -1);
+  for (size_t i = 0; i < batches.size(); ++i)
+    for (int32_t v : batches[i]) {
+      ASSERT_EQ(batch_of[v], -1) << v;
+      batch_of[v] = static_cast<int32_t>(i);
+    }
+  // A vertex runs after every earlier one it reads, and never before an earlier one reading it.
+  for (int32_t v = 0; v < static_cast<int32_t>(order.size()); ++v) {
+    ASSERT_GE(batch_of[v], 0);
+    for (int64_t k = windows.first[v]; k < windows.first[v + 1]; ++k) {
+      const int32_t u = windows.vertices[k];
+      if (position[u] < position[v]) {
+        EXPECT_LT(batch_of[u], batch_of[v]);
+      } else {
+        EXPECT_GE(batch_of[u], batch_of[v]);
+      }
+    }
+  }
+  EXPECT_EQ(sweep_batches(order, windows, 1).size(), order.size());
+  EXPECT_EQ(sweep_batches(order, windows, 1)[5], std::vector<int32_t>{order[5]});
+}
+
+MESHQUILT_ON_BACKENDS(SurfacePaint);
 
 }  // namespace
 }  // namespace meshquilt

@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
 #include "mesh/topology.h"
+#include "device.h"
 #include "paint/surface_relief.h"
 #include "spatial/intersecting_pairs.h"
 #include "support/surface_fixtures.h"
@@ -17,6 +20,12 @@
 
 namespace meshquilt {
 namespace {
+
+// Relief's own figures; paint's back ends are compared in surface_paint_test.
+engine::Device* cpu() {
+  static const std::unique_ptr<engine::Device> device = engine::open_device(engine::BackendChoice::cpu);
+  return device.get();
+}
 
 ColourImage grey(double value) {
   ColourImage image;
@@ -35,7 +44,7 @@ TEST(SurfaceRelief, AConstantImageRaisesEveryVertexAlongItsNormal) {
   ReliefOptions options;
   options.paint.pixels_per_unit = 6.0;
   options.height = 0.1;
-  const ReliefResult relief = relief_surface(sphere, grey(0.6), {}, options);
+  const ReliefResult relief = relief_surface(sphere, grey(0.6), {}, options, *cpu());
   // The same refinement, measured independently: each vertex moves by 0.6 x 0.1 along its normal.
   const TriMesh refined = split_faces(sphere, relief.levels);
   ASSERT_EQ(relief.mesh.num_vertices(), refined.num_vertices());
@@ -48,7 +57,7 @@ TEST(SurfaceRelief, AConstantImageRaisesEveryVertexAlongItsNormal) {
     EXPECT_NEAR(glm::length(moved - expected * surface.vertex_normals[v]), 0.0, 1e-12);
   }
   EXPECT_TRUE(inspect_surface(relief.mesh).closed_manifold());
-  EXPECT_THROW(relief_surface(sphere, grey(0.6), {}, ReliefOptions{options.paint, -1.0}), InputError);
+  EXPECT_THROW(relief_surface(sphere, grey(0.6), {}, ReliefOptions{options.paint, -1.0}, *cpu()), InputError);
 }
 
 TEST(SurfaceRelief, AHollowTooTightIsClampedAndStaysClosedWithoutSelfIntersections) {
@@ -58,7 +67,7 @@ TEST(SurfaceRelief, AHollowTooTightIsClampedAndStaysClosedWithoutSelfIntersectio
   ReliefOptions options;
   options.paint.pixels_per_unit = 12.0;
   options.height = 0.5;
-  const ReliefResult relief = relief_surface(ring, grey(1.0), {}, options);
+  const ReliefResult relief = relief_surface(ring, grey(1.0), {}, options, *cpu());
   EXPECT_GT(relief.clamped, 0);
   EXPECT_TRUE(inspect_surface(relief.mesh).closed_manifold());
   EXPECT_EQ(self_intersections(relief.mesh), 0u);
