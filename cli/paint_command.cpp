@@ -43,6 +43,8 @@ void run_paint(PaintArgs& args) {
                                   {"vertices", painted.mesh.num_vertices()},
                                   {"faces", painted.mesh.num_faces()},
                                   {"mean_cost", painted.mean_cost},
+                                  {"visits", painted.visits},
+                                  {"batches", painted.batches},
                                   {"backend", engine::backend_name(device->backend())},
                                   {"device", device->name()},
                                   {"seconds", seconds}};

@@ -2,7 +2,7 @@
 // The mismatch of an image neighbourhood against the sample at candidate positions, one
 // invocation per candidate: sum over the visit's neighbours of weight x |colour - sample|^2, the
 // sample read bilinearly between pixel centres and wrapped round its borders. Its C++ twin is in
-// neighbourhood_cost.cpp.
+// neighbourhood_cost_cpu.cpp.
 #extension GL_GOOGLE_include_directive : require
 #include "neighbourhood_cost_layout.h"
 

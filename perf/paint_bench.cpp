@@ -1,6 +1,7 @@
 // Time per vertex of paint (Turk 2001 as decision 0036 builds it): paints a base from an image
 // sample N times and prints the median seconds, the vertices coloured and the microseconds per
-// vertex, as a Markdown table row, on the back end asked for (the CPU twin by default).
+// vertex and the mean vertices scored per dispatch, as a Markdown table row, on the back end
+// asked for (the CPU twin by default).
 //
 //   paint_bench BASE IMAGE [--scale S] [--field F.json] [--runs N] [--backend cpu|vulkan]
 #include <algorithm>
@@ -44,18 +45,22 @@ int main(int argc, char** argv) {
   PaintOptions options;
   options.pixels_per_unit = sample.width / (scale * glm::length(bounding_box(base.positions).extent()));
   std::vector<double> seconds;
-  size_t vertices = 0;
+  size_t vertices = 0, visits = 0, batches = 0;
   for (int run = 0; run < runs; ++run) {
     const auto start = std::chrono::steady_clock::now();
     const PaintResult painted = paint_surface(base, sample, constraints, options, *device);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     vertices = painted.mesh.num_vertices();
+    visits = painted.visits;
+    batches = painted.batches;
   }
   std::sort(seconds.begin(), seconds.end());
   const double median = seconds[seconds.size() / 2];
-  std::printf("| base | sample | device | vertices | median s (of %d) | us per vertex |\n| --- | --- | --- | --- | --- | --- |\n",
+  std::printf("| base | sample | device | vertices | visits per batch | median s (of %d) | us per vertex |\n"
+              "| --- | --- | --- | --- | --- | --- | --- |\n",
               runs);
-  std::printf("| %s | %s (%d x %d) | %s | %zu | %.2f | %.1f |\n", argv[1], argv[2], sample.width, sample.height,
-              device->name().c_str(), vertices, median, 1e6 * median / static_cast<double>(vertices));
+  std::printf("| %s | %s (%d x %d) | %s | %zu | %.1f | %.2f | %.1f |\n", argv[1], argv[2], sample.width, sample.height,
+              device->name().c_str(), vertices, static_cast<double>(visits) / static_cast<double>(std::max<size_t>(1, batches)),
+              median, 1e6 * median / static_cast<double>(vertices));
   return 0;
 }

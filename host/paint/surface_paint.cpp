@@ -135,6 +135,8 @@ class Painter {
   double pass(const std::vector<int32_t>& order, bool whole, uint64_t pass_index) {
     double cost = 0.0;
     for (const std::vector<int32_t>& batch : sweep_batches(order, windows_, options_.max_batch)) {
+      ++batches_;
+      visits_made_ += batch.size();
       work_.clear();
       visits_.clear();
       neighbours_.clear();
@@ -161,6 +163,8 @@ class Painter {
   }
 
   const std::vector<glm::dvec3>& colours() const { return colour_; }
+  size_t batches() const { return batches_; }
+  size_t visits() const { return visits_made_; }
   const std::vector<glm::dvec2>& sources() const { return source_; }
 
  private:
@@ -290,6 +294,7 @@ class Painter {
   std::vector<glm::dvec2> candidates_;
   std::unordered_set<uint64_t> seen_;
   double sigma2_ = 1.0;
+  size_t batches_ = 0, visits_made_ = 0;
 };
 
 }  // namespace
@@ -329,6 +334,8 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     if (step < coarsest) painter.start_from(sources);
     for (int pass = 0; pass < passes; ++pass) cost = painter.pass(result.order, pass > 0 || step < coarsest, pass);
     sources = painter.sources();
+    result.batches += painter.batches();
+    result.visits += painter.visits();
     if (step == 0) {
       result.mesh = std::move(mesh);
       result.source = sources;

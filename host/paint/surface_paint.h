@@ -41,6 +41,8 @@ struct PaintResult {
   std::vector<Vec3> directions;        //!< #V the field at each vertex: its frame's x axis
   int levels = 0;                      //!< 1-to-4 splits of the base
   double mean_cost = 0.0;              //!< mean neighbourhood mismatch of the last pass, per neighbour
+  size_t visits = 0;                   //!< vertices coloured, over every level and pass
+  size_t batches = 0;                  //!< batches of them scored side by side
 };
 
 //! Paints `base` from `sample`, oriented by the guidance field of `constraints` (synth's
