@@ -1,7 +1,9 @@
 // `meshquilt paint --base B --image SAMPLE -o OUT`: colour synthesized over a base from an image
 // sample (Turk 2001), oriented by the same guidance field as synth.
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -12,7 +14,9 @@
 #include "core/error.h"
 #include "image_synthesis_inputs.h"
 #include "mesh/mesh_io.h"
+#include "paint/colour_atlas.h"
 #include "paint/surface_paint.h"
+#include "render/png_encoding.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -21,20 +25,37 @@ struct PaintArgs {
   std::string base, image, output, field, stats, write_field, backend = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
+  int atlas = 0;
   PaintOptions options;
 };
 
 void run_paint(PaintArgs& args) {
   const auto start = std::chrono::steady_clock::now();
+  std::string extension = std::filesystem::path(args.output).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (args.atlas != 0 && extension != ".glb")
+    throw InputError("--atlas: writes a textured .glb, not " + args.output, ErrorKind::invalid_option);
+  if (args.atlas != 0 && (args.atlas < 16 || args.atlas > 16384))
+    throw InputError("--atlas: expected 16..16384 texels a side, got " + std::to_string(args.atlas), ErrorKind::invalid_option);
   if (!args.write_field.empty()) check_writable(args.write_field);
   const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
                                                                args.pixels_per_unit, args.output, args.stats);
   args.options.pixels_per_unit = in.pixels_per_unit;
   const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
   const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options, *device);
-  write_mesh(painted.mesh, args.output);
+  nlohmann::json baked;
+  if (args.atlas != 0) {
+    const ColourAtlas atlas = bake_colour_atlas(in.base, painted.mesh, painted.levels, args.atlas);
+    write_textured_glb(in.base, {atlas.face_uv, encode_png(atlas.image)}, args.output);
+    baked = {{"size", args.atlas},
+             {"charts", atlas.charts},
+             {"texels_per_unit", atlas.texels_per_unit},
+             {"faces", in.base.num_faces()}};
+  } else {
+    write_mesh(painted.mesh, args.output);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const nlohmann::json summary = {{"base", args.base},
+  nlohmann::json summary = {{"base", args.base},
                                   {"image", args.image},
                                   {"output", args.output},
                                   {"sample", {in.sample.width, in.sample.height}},
@@ -48,9 +69,15 @@ void run_paint(PaintArgs& args) {
                                   {"backend", engine::backend_name(device->backend())},
                                   {"device", device->name()},
                                   {"seconds", seconds}};
+  if (!baked.is_null()) summary["atlas"] = baked;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   if (!args.write_field.empty()) write_field_lines(args.write_field, painted.directions);
-  std::printf("wrote %s: %zu vertices coloured from %s (%d x %d) in %.1f s\n", args.output.c_str(),
+  if (args.atlas != 0)
+    std::printf("wrote %s: the base's %zu faces over a %d x %d texture, %zu vertices coloured from %s in %.1f s\n",
+                args.output.c_str(), in.base.num_faces(), args.atlas, args.atlas, painted.mesh.num_vertices(),
+                args.image.c_str(), seconds);
+  else
+    std::printf("wrote %s: %zu vertices coloured from %s (%d x %d) in %.1f s\n", args.output.c_str(),
               painted.mesh.num_vertices(), args.image.c_str(), in.sample.width, in.sample.height, seconds);
 }
 
@@ -73,6 +100,8 @@ void add_paint_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->options.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
+  cmd->add_option("--atlas", args->atlas,
+                  "bake the colours into an N x N texture over the base's charts: writes the base with UVs (.glb only)");
   cmd->add_option("--stats", args->stats, "write figures as JSON");
   cmd->add_option("--write-field", args->write_field,
                   "write the field each output vertex was painted along, one 'x y z' line per vertex");

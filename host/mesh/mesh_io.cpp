@@ -122,4 +122,20 @@ void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const Wr
   write_file_atomic(file, content, options.cancel);
 }
 
+void write_textured_glb(const TriMesh& mesh, const GlbTexture& texture, const std::filesystem::path& file) {
+  const std::string name = file.string();
+  if (lower_extension(file) != ".glb")
+    throw IoError(ErrorKind::unknown_format, name + ": a texture needs a .glb output");
+  if (texture.face_uv.size() != mesh.triangles.size())
+    throw IoError(ErrorKind::write_failed, name + ": " + std::to_string(texture.face_uv.size()) + " textured faces for " +
+                                               std::to_string(mesh.triangles.size()));
+  if (texture.png.size() < 8 || texture.png.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
+    throw IoError(ErrorKind::write_failed, name + ": the texture is not a PNG");
+  for (const Tri& t : mesh.triangles)
+    for (int32_t i : t)
+      if (i < 0 || static_cast<size_t>(i) >= mesh.positions.size())
+        throw IoError(ErrorKind::write_failed, name + ": face vertex index " + std::to_string(i) + " out of range");
+  write_file_atomic(file, io::format_glb(mesh, &texture));
+}
+
 }  // namespace meshquilt

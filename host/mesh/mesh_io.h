@@ -13,6 +13,11 @@
 #include <string>
 #include <string_view>
 
+#include <array>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
@@ -52,6 +57,18 @@ struct WriteOptions {
 //! Coordinates are written in shortest round-trip form (ASCII) or as doubles (PLY binary), so
 //! PLY/OBJ/OFF round trips are exact; STL stores floats.
 void write_mesh(const TriMesh& mesh, const std::filesystem::path& file, const WriteOptions& options = {});
+
+//! An image mapped onto a mesh's faces, for binary glTF.
+struct GlbTexture {
+  std::vector<std::array<glm::vec2, 3>> face_uv;  //!< #F texture coordinates of each face's corners (glTF's: v down)
+  std::string png;                                //!< the image, a whole PNG file
+};
+
+//! Writes `mesh` as binary glTF (.glb) with `texture` as its base colour (TEXCOORD_0, the PNG
+//! embedded, a material that shows it), atomically as write_mesh writes.
+//! \throw IoError(unknown_format) unless `file` ends in .glb; IoError(write_failed) for a
+//!        texture whose face count or PNG does not fit, or any write error.
+void write_textured_glb(const TriMesh& mesh, const GlbTexture& texture, const std::filesystem::path& file);
 
 //! Whether write_mesh can write `file`'s format, checked before long work.
 //! \throw IoError(unknown_format) naming the file.

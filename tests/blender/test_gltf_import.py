@@ -1,7 +1,8 @@
 """Our .glb files through Blender's own glTF importer, headless:
-    blender -b --factory-startup --python-exit-code 1 --python test_gltf_import.py -- MESHQUILT WORK_DIR
+    blender -b --factory-startup --python-exit-code 1 --python test_gltf_import.py -- MESHQUILT WORK_DIR DATA_DIR
 A synthesized chain mail, the same aged and recoloured by `edit`, and the frames `animate` writes
-for a swaying vine are imported; each must come in with the counts meshquilt reported, the
+for a swaying vine, and a sphere painted with its colours baked into a texture (`paint --atlas`)
+are imported; each must come in with the counts meshquilt reported, the
 recoloured one with its colours (one per face), the frames with the same counts and moving
 vertices. Blender 3.4's importer keeps no custom attributes, so `_ELEMENT` and `_SOURCE` are
 reported, not required (the independent reader in tests/cli checks them)."""
@@ -18,8 +19,8 @@ if not hasattr(numpy, "bool"):
 
 import bpy  # noqa: E402
 
-meshquilt, work = sys.argv[sys.argv.index("--") + 1:][:2]
-work = Path(work)
+meshquilt, work, data = sys.argv[sys.argv.index("--") + 1:][:3]
+work, data = Path(work), Path(data)
 work.mkdir(parents=True, exist_ok=True)
 
 
@@ -83,7 +84,23 @@ else:
 check(all(numpy.ptp(c, axis=0).max() < 1e-6 for c in per_face), "every face has one colour")
 check(len({tuple(numpy.round(c[0], 4)) for c in per_face}) > 1, "the sources have different colours")
 
-# A swaying vine's frames.
+# Colour painted over the sphere and baked into a texture over its charts.
+cli("paint", "--base", data / "sphere.off", "--image", data / "bricks.ppm", "--scale", 0.3, "--atlas", 128,
+    "--backend", "cpu", "-o", work / "painted.glb", "--stats", work / "painted.json")
+painted_stats = json.loads((work / "painted.json").read_text())
+painted = imported(work / "painted.glb")
+check(len(painted.polygons) == painted_stats["atlas"]["faces"],
+      "paint --atlas's .glb: the base's %d faces" % len(painted.polygons))
+check(len(painted.uv_layers) == 1, "its texture coordinates come in as a UV map")
+uv = numpy.zeros(2 * len(painted.uv_layers[0].data))
+painted.uv_layers[0].data.foreach_get("uv", uv)
+check(uv.min() >= 0.0 and uv.max() <= 1.0 and numpy.ptp(uv) > 0.5, "the UVs spread over the unit square")
+images = [n.image for m in painted.materials for n in m.node_tree.nodes if n.type == "TEX_IMAGE" and n.image]
+check(len(images) == 1 and tuple(images[0].size) == (128, 128), "its material shows the 128 x 128 texture")
+pixels = numpy.array(images[0].pixels[:]).reshape(-1, 4)
+check(numpy.ptp(pixels[:, 0]) > 0.3, "the texture holds the bricks, not one colour")
+
+
 cli("swatch", "vine", "--preset", "small", "--frames", 3, "-o", work / "vine.ply")
 cli("synth", "--swatch", work / "vine.ply", "--plane", "1x1", "--progress", "none", "--backend", "cpu",
     "--provenance", "-o", work / "vine_out.ply")

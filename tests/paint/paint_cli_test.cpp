@@ -55,6 +55,22 @@ TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
   EXPECT_NE(window.output.find("--window"), std::string::npos) << window.output;
   // The good output is left as it was.
   EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
+
+  // --atlas: the base with a texture, as .glb only.
+  const std::string glb = (dir / "atlas.glb").string();
+  const test::CliResult baked = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
+                                              (dir / "sample.ppm").string() + " --scale 0.5 --atlas 64 -o " + glb);
+  ASSERT_EQ(baked.exit_code, 0) << baked.output;
+  std::ifstream glb_in(glb, std::ios::binary);
+  const std::string glb_bytes((std::istreambuf_iterator<char>(glb_in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(glb_bytes.substr(0, 4), "glTF");
+  EXPECT_NE(glb_bytes.find("TEXCOORD_0"), std::string::npos);
+  EXPECT_NE(glb_bytes.find("\x89PNG"), std::string::npos);
+  const test::CliResult not_glb = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
+                                                (dir / "sample.ppm").string() + " --atlas 64 -o " + out);
+  EXPECT_EQ(not_glb.exit_code, window.exit_code);
+  EXPECT_NE(not_glb.output.find("--atlas"), std::string::npos) << not_glb.output;
+  EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
 }
 
 TEST(PaintCli, BothBackEndsWriteTheSameFile) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "mesh/mesh_io.h"
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt::io {
@@ -22,6 +23,6 @@ std::string format_obj(const TriMesh& mesh);
 std::string format_off(const TriMesh& mesh);
 std::string format_ply(const TriMesh& mesh, bool binary);
 std::string format_stl(const TriMesh& mesh, bool binary);
-std::string format_glb(const TriMesh& mesh);  // write only
+std::string format_glb(const TriMesh& mesh, const GlbTexture* texture = nullptr);  // write only
 
 }  // namespace meshquilt::io
