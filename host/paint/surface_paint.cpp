@@ -77,16 +77,17 @@ std::vector<std::pair<int32_t, int32_t>> midpoint_parents(const TriMesh& mesh) {
 // The field on split_faces(mesh, 1): old vertices keep theirs, a midpoint takes its edge's mean,
 // each in its own tangent plane. Spread over the split mesh instead, the given directions would
 // reach as many edges as over the base, so a fraction of the distance: not synth's field.
-std::vector<Vec3> split_field(const TriMesh& mesh, const std::vector<Vec3>& directions, const BaseSurface& finer) {
-  std::vector<Vec3> out(finer.mesh.num_vertices());
+std::vector<Vec3> split_field(const TriMesh& mesh, const std::vector<Vec3>& directions, const TriMesh& finer,
+                              const std::vector<std::pair<int32_t, int32_t>>& parents) {
+  std::vector<Vec3> out(finer.num_vertices());
   std::copy(directions.begin(), directions.end(), out.begin());
-  const std::vector<std::pair<int32_t, int32_t>> parents = midpoint_parents(mesh);
   for (size_t k = 0; k < parents.size(); ++k) {
     const Vec3 a = directions[parents[k].first], b = directions[parents[k].second];
     out[mesh.num_vertices() + k] = glm::length(a + b) > 1e-9 ? a + b : a;
   }
+  const std::vector<Vec3> normals = vertex_normals(finer);
   for (size_t v = 0; v < out.size(); ++v) {
-    const Vec3& n = finer.vertex_normals[v];
+    const Vec3& n = normals[v];
     const Vec3 t = out[v] - glm::dot(out[v], n) * n;
     if (glm::length(t) > 1e-9) out[v] = glm::normalize(t);
   }
@@ -318,7 +319,7 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
   std::vector<Vec3> directions = interpolate_field(BaseSurface(base), constraints).directions;
   for (int k = 0; k < result.levels - coarsest; ++k) {
     TriMesh finer = split_faces(mesh, 1);
-    directions = split_field(mesh, directions, BaseSurface(finer));
+    directions = split_field(mesh, directions, finer, midpoint_parents(mesh));
     mesh = std::move(finer);
   }
   std::vector<glm::dvec2> sources;
@@ -365,7 +366,7 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
       carried[mesh.num_vertices() + k] = 2.0 * sources[a] + next * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
     }
     sources = std::move(carried);
-    directions = split_field(mesh, directions, BaseSurface(finer));
+    directions = split_field(mesh, directions, finer, parents);
     mesh = std::move(finer);
   }
   result.mean_cost = cost / static_cast<double>(std::max<size_t>(1, result.order.size()));
