@@ -83,8 +83,10 @@ std::vector<float> NeighbourhoodCost::score(const NeighbourhoodBatch& batch) {
     invalid("a batch of " + std::to_string(batch.neighbours.size()) + " neighbours exceeds one binding");
   engine::Buffer& visits = ensure(visits_, batch.visits.size() * sizeof(NeighbourhoodVisit));
   engine::Buffer& neighbours = ensure(neighbours_, batch.neighbours.size() * sizeof(NeighbourhoodNeighbour));
-  std::memcpy(visits.data(), batch.visits.data(), batch.visits.size() * sizeof(NeighbourhoodVisit));
-  std::memcpy(neighbours.data(), batch.neighbours.data(), batch.neighbours.size() * sizeof(NeighbourhoodNeighbour));
+  // Visits without neighbours (the first vertex of a sweep) leave the list empty.
+  if (!batch.visits.empty()) std::memcpy(visits.data(), batch.visits.data(), batch.visits.size() * sizeof(NeighbourhoodVisit));
+  if (!batch.neighbours.empty())
+    std::memcpy(neighbours.data(), batch.neighbours.data(), batch.neighbours.size() * sizeof(NeighbourhoodNeighbour));
   const std::size_t per_dispatch = std::min(batch.candidates.size(), limit / sizeof(NeighbourhoodCandidate));
   engine::Buffer& candidates = ensure(candidates_, per_dispatch * sizeof(NeighbourhoodCandidate));
   engine::Buffer& out = ensure(costs_, per_dispatch * sizeof(float));

@@ -16,6 +16,7 @@
 #include "paint/sweep_order.h"
 #include "neighbourhood_cost.h"
 #include "surface/base_layout.h"
+#include "surface/direction_field.h"
 #include "surface/surface_types.h"
 
 namespace meshquilt {
@@ -90,6 +91,25 @@ std::vector<Vec3> split_field(const TriMesh& mesh, const std::vector<Vec3>& dire
     const Vec3& n = normals[v];
     const Vec3 t = out[v] - glm::dot(out[v], n) * n;
     if (glm::length(t) > 1e-9) out[v] = glm::normalize(t);
+  }
+  return out;
+}
+
+// Synth's field as a vector field per base vertex: the smoothest 1-direction field holding the
+// guidance field's directions as synth's layout holds them (a sample has no symmetry to spare),
+// each vertex the mean of its faces' directions in its tangent plane. Where that mean vanishes
+// (at a singularity) the guidance field's own direction stands.
+std::vector<Vec3> base_field(const BaseSurface& base, const std::vector<FieldConstraint>& constraints) {
+  const GuidanceField guidance = interpolate_field(base, constraints);
+  const FieldTargets targets = field_targets(base, guidance);
+  const DirectionField smoothest = smoothest_direction_field(base, 1, targets.target, targets.weight);
+  std::vector<Vec3> out(base.mesh.num_vertices());
+  for (size_t v = 0; v < out.size(); ++v) {
+    Vec3 sum(0.0);
+    for (int32_t f : base.vertex_faces[v]) sum += base.face_areas[f] * smoothest.directions[f];
+    const Vec3& n = base.vertex_normals[v];
+    const Vec3 t = sum - glm::dot(sum, n) * n;
+    out[v] = glm::length(t) > 1e-9 * (1.0 + glm::length(sum)) ? glm::normalize(t) : guidance.directions[v];
   }
   return out;
 }
@@ -314,9 +334,9 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
          pyramid.back().height / 2 > options.window)
     pyramid.push_back(halved(pyramid.back()));
   const int coarsest = static_cast<int>(pyramid.size()) - 1;
-  // Synth's field: spread over the base, then carried to each split.
+  // Synth's field on the base, then carried to each split.
   TriMesh mesh = base;
-  std::vector<Vec3> directions = interpolate_field(BaseSurface(base), constraints).directions;
+  std::vector<Vec3> directions = base_field(BaseSurface(base), constraints);
   for (int k = 0; k < result.levels - coarsest; ++k) {
     TriMesh finer = split_faces(mesh, 1);
     directions = split_field(mesh, directions, finer, midpoint_parents(mesh));

@@ -47,6 +47,17 @@ double signed_angle(const Vec3& from, const Vec3& to, const Vec3& normal) {
   return std::atan2(glm::dot(glm::cross(from, to), normal), glm::dot(from, to));
 }
 
+FieldTargets field_targets(const BaseSurface& base, const GuidanceField& guidance) {
+  const size_t faces = base.mesh.num_faces();
+  FieldTargets out;
+  out.target.resize(faces);
+  for (size_t f = 0; f < faces; ++f) out.target[f] = guidance.at(base, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)});
+  out.weight.assign(faces, guidance.held_vertices.empty() ? default_field_weight(base) : guided_field_weight(base));
+  for (int32_t v : guidance.held_vertices)
+    for (int32_t f : base.vertex_faces[v]) out.weight[f] = 10.0;
+  return out;
+}
+
 double default_field_weight(const BaseSurface& base) {
   // Below the smallest eigenvalue of the connection Laplacian (about 1 / #F on a surface of mean
   // face area 1) by a hundredfold.

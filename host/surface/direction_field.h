@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "surface/guidance_field.h"
 #include "surface/surface_types.h"
 
 namespace meshquilt {
@@ -36,6 +37,16 @@ double default_field_weight(const BaseSurface& base);
 //! bunny with data/bunny_field.json: 8.9 degrees from it where it turns slowly, against 13.5 with
 //! the default weight).
 double guided_field_weight(const BaseSurface& base);
+
+//! What the smoothest field is asked to hold for a guidance field: its direction at each face's
+//! centroid, weighted as a drawn field (guided_field_weight, and 10 round a given direction's
+//! vertex) or as the default one (default_field_weight), which only picks among the smoothest.
+struct FieldTargets {
+  std::vector<Vec3> target;    //!< #F
+  std::vector<double> weight;  //!< #F
+};
+
+FieldTargets field_targets(const BaseSurface& base, const GuidanceField& guidance);
 
 //! A tangent direction of face f carried across its edge (a, b) into face g: the same angle to the
 //! edge, in g's plane (discrete parallel transport: unfolding g into f's plane).

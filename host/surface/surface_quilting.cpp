@@ -115,18 +115,13 @@ class SurfaceDriver {
     StageTimer timer(seconds_, "layout");
     const int n = options_.symmetry > 0 ? options_.symmetry : rotational_symmetry(swatch_);
     if (n != 1 && n != 2 && n != 4) throw OptionError("{symmetry} must be 1, 2 or 4");
-    const size_t faces = base_.mesh.num_faces();
-    std::vector<Vec3> target(faces);
-    for (size_t f = 0; f < faces; ++f) target[f] = field_.at(base_, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)});
     // A field the user drew is followed everywhere; the default one only breaks the smoothest
     // field's rotational freedom.
-    std::vector<double> weight(faces, field_.held_vertices.empty() ? default_field_weight(base_) : guided_field_weight(base_));
-    for (int32_t v : field_.held_vertices)
-      for (int32_t f : base_.vertex_faces[v]) weight[f] = 10.0;
+    const FieldTargets targets = field_targets(base_, field_);
     lattice_ = swatch_lattice(swatch_, n);
     std::optional<std::array<glm::dvec2, 2>> periods;
     if (lattice_) periods = std::array<glm::dvec2, 2>{unit_ * lattice_->basis[0], unit_ * lattice_->basis[1]};
-    auto layout = std::make_unique<BaseLayout>(base_, n, target, weight, !field_.held_vertices.empty(), periods);
+    auto layout = std::make_unique<BaseLayout>(base_, n, targets.target, targets.weight, !field_.held_vertices.empty(), periods);
     stats_.on_lattice = layout->layout().on_lattice;
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();

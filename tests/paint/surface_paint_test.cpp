@@ -121,12 +121,11 @@ TEST_P(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
 }
 
 TEST_P(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
-  // One direction held on a coarse plane: the field synth spreads over the base. Spread over the
-  // refined mesh instead, it would turn back to the default within a few fine edges.
+  // One direction held on a coarse plane: synth's smoothest field holding it is that direction
+  // everywhere. Spread over the refined mesh instead, it would turn back to the default within a
+  // few fine edges.
   const TriMesh plane = test::flat_grid(8, 8, 0.125, 0.0);
   const std::vector<FieldConstraint> held{{40, glm::normalize(Vec3(1, 1, 0))}};
-  const BaseSurface surface(plane);
-  const GuidanceField synth_field = interpolate_field(surface, held);
   ColourImage image;
   image.width = image.height = 16;
   image.rgb.assign(256, glm::dvec3(0.5));
@@ -135,20 +134,10 @@ TEST_P(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
   const PaintResult painted = paint_surface(plane, image, held, options, device());
   ASSERT_GE(painted.levels, 3);
   ASSERT_EQ(painted.directions.size(), painted.mesh.num_vertices());
-  // The base's own vertices come first in the refined mesh and keep synth's directions; a
-  // midpoint lies between its edge's.
+  // Every vertex of every split runs along the held direction.
   double worst = 0.0;
-  for (size_t v = 0; v < plane.num_vertices(); ++v)
-    worst = std::max(worst, glm::length(painted.directions[v] - synth_field.directions[v]));
-  EXPECT_LT(worst, 1e-9);
-  for (size_t v = plane.num_vertices(); v < painted.mesh.num_vertices(); ++v) {
-    size_t nearest = 0;
-    for (size_t w = 1; w < plane.num_vertices(); ++w)
-      if (glm::distance(plane.positions[w], painted.mesh.positions[v]) <
-          glm::distance(plane.positions[nearest], painted.mesh.positions[v]))
-        nearest = w;
-    EXPECT_GT(glm::dot(painted.directions[v], synth_field.directions[nearest]), std::cos(10.0 * std::numbers::pi / 180.0)) << v;
-  }
+  for (const Vec3& d : painted.directions) worst = std::max(worst, std::acos(std::min(1.0, glm::dot(d, held[0].direction))));
+  EXPECT_LT(worst, 1.0 * std::numbers::pi / 180.0);
 }
 
 TEST_P(SurfacePaint, IsDeterministicForASeedAndRefusesBadOptions) {
