@@ -16,13 +16,14 @@
 #include "mesh/mesh_io.h"
 #include "paint/colour_atlas.h"
 #include "paint/surface_paint.h"
+#include "progress.h"
 #include "render/png_encoding.h"
 
 namespace meshquilt::cli {
 namespace {
 
 struct PaintArgs {
-  std::string base, image, output, field, stats, write_field, backend = "auto";
+  std::string base, image, output, field, stats, write_field, backend = "auto", progress = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   int atlas = 0;
@@ -42,6 +43,14 @@ void run_paint(PaintArgs& args) {
                                                                args.pixels_per_unit, args.output, args.stats);
   args.options.pixels_per_unit = in.pixels_per_unit;
   const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
+  const ProgressMode progress_mode = parse_progress_mode(args.progress);
+  ProgressReporter progress(progress_mode, "paint");
+  size_t next_report = 0;  // a line per half percent, not per batch
+  args.options.progress = [&](size_t done, size_t total) {
+    if (done < next_report && done < total) return;
+    next_report = done + total / 200;
+    progress.update(static_cast<double>(done), static_cast<double>(total));
+  };
   const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options, *device);
   nlohmann::json baked;
   if (args.atlas != 0) {
@@ -72,6 +81,8 @@ void run_paint(PaintArgs& args) {
   if (!baked.is_null()) summary["atlas"] = baked;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   if (!args.write_field.empty()) write_field_lines(args.write_field, painted.directions);
+  progress.finish(summary.dump());
+  if (progress_mode == ProgressMode::json) return;
   if (args.atlas != 0)
     std::printf("wrote %s: the base's %zu faces over a %d x %d texture, %zu vertices coloured from %s in %.1f s\n",
                 args.output.c_str(), in.base.num_faces(), args.atlas, args.atlas, painted.mesh.num_vertices(),
@@ -100,6 +111,7 @@ void add_paint_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->options.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
+  cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();
   cmd->add_option("--atlas", args->atlas,
                   "bake the colours into an N x N texture over the base's charts: writes the base with UVs (.glb only)");
   cmd->add_option("--stats", args->stats, "write figures as JSON");

@@ -23,12 +23,13 @@
 #include "mesh/measures.h"
 #include "paint/detail_extraction.h"
 #include "paint/surface_relief.h"
+#include "progress.h"
 
 namespace meshquilt::cli {
 namespace {
 
 struct ReliefArgs {
-  std::string base, image, output, field, stats, write_sample, write_field, backend = "auto";
+  std::string base, image, output, field, stats, write_sample, write_field, backend = "auto", progress = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
   ReliefOptions options;
@@ -93,6 +94,14 @@ void run_relief(ReliefArgs& args, bool height_given) {
   args.options.paint.pixels_per_unit = in.pixels_per_unit;
   if (!args.write_sample.empty()) write_text_atomic(args.write_sample, grey_pgm(in.sample));
   const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
+  const ProgressMode progress_mode = parse_progress_mode(args.progress);
+  ProgressReporter progress(progress_mode, "relief");
+  size_t next_report = 0;  // a line per half percent, not per batch
+  args.options.paint.progress = [&](size_t done, size_t total) {
+    if (done < next_report && done < total) return;
+    next_report = done + total / 200;
+    progress.update(static_cast<double>(done), static_cast<double>(total));
+  };
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options, *device);
   write_mesh(relief.mesh, args.output);
   if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);
@@ -114,6 +123,8 @@ void run_relief(ReliefArgs& args, bool height_given) {
                                   {"seconds", seconds}};
   if (!from.is_null()) summary["from"] = from;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
+  progress.finish(summary.dump());
+  if (progress_mode == ProgressMode::json) return;
   std::printf("wrote %s: %zu vertices raised by up to %g (%d clamped to their room) in %.1f s\n", args.output.c_str(),
               relief.mesh.num_vertices(), highest, relief.clamped, seconds);
 }
@@ -150,6 +161,7 @@ void add_relief_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->options.paint.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
+  cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();
   cmd->add_option("--stats", args->stats, "write figures as JSON");
   cmd->add_option("--write-sample", args->write_sample, "write the height sample used (grey, 16-bit PGM)");
   cmd->add_option("--write-field", args->write_field,

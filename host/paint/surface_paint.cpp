@@ -158,6 +158,7 @@ class Painter {
     for (const std::vector<int32_t>& batch : sweep_batches(order, windows_, options_.max_batch)) {
       ++batches_;
       visits_made_ += batch.size();
+      if (options_.progress) options_.progress(*visits_before_ + visits_made_, total_visits_);
       work_.clear();
       visits_.clear();
       neighbours_.clear();
@@ -181,6 +182,12 @@ class Painter {
       colour_[v] = sample_.sample(source_[v]);
       done_[v] = 1;
     }
+  }
+
+  // What progress reports: visits of the levels before this one, and of the whole job.
+  void count_from(const size_t* visits_before, size_t total_visits) {
+    visits_before_ = visits_before;
+    total_visits_ = total_visits;
   }
 
   const std::vector<glm::dvec3>& colours() const { return colour_; }
@@ -316,7 +323,22 @@ class Painter {
   std::unordered_set<uint64_t> seen_;
   double sigma2_ = 1.0;
   size_t batches_ = 0, visits_made_ = 0;
+  const size_t* visits_before_ = &no_visits_;
+  size_t no_visits_ = 0, total_visits_ = 0;
 };
+
+// Visits of the whole job: each level's passes over its vertices, a split adding one per edge.
+size_t total_visits(const TriMesh& base, int levels, int coarsest, const PaintOptions& options) {
+  size_t vertices = base.num_vertices(), edges = midpoint_parents(base).size(), faces = base.num_faces(), total = 0;
+  for (int k = 0; k <= levels; ++k) {
+    const int step = levels - k;
+    if (step <= coarsest) total += vertices * static_cast<size_t>(step == coarsest ? options.passes : std::max(1, options.passes - 1));
+    vertices += edges;
+    edges = 2 * edges + 3 * faces;
+    faces *= 4;
+  }
+  return total;
+}
 
 }  // namespace
 
@@ -344,11 +366,13 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
   }
   std::vector<glm::dvec2> sources;
   double cost = 0.0;
+  const size_t total = total_visits(base, result.levels, coarsest, options);
   for (int step = coarsest; step >= 0; --step) {
     const double pixels_per_unit = std::ldexp(options.pixels_per_unit, -step);
     const BaseSurface surface(mesh);
     result.order = sweep_order(sweep_function(surface, directions));
     Painter painter(surface, directions, pyramid[step], device, pixels_per_unit, options, options.seed + step);
+    painter.count_from(&result.visits, total);
     // The coarsest level is swept; a finer one starts from the coarser positions carried over
     // and is corrected with whole neighbourhoods.
     const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);

@@ -13,6 +13,7 @@
 //! coarse split level, each finer level started from the positions carried over and corrected.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -32,6 +33,9 @@ struct PaintOptions {
   uint64_t seed = 1;              //!< of every random choice
   size_t max_vertices = 4000000;  //!< refuse a refinement past this many vertices
   size_t max_batch = 4096;        //!< vertices scored in one dispatch; 1: the sweep one vertex at a time
+  //! Called after each batch with the visits made and all the job will make (every level and
+  //! pass): the last call has done == total.
+  std::function<void(size_t done, size_t total)> progress;
 };
 
 struct PaintResult {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -71,6 +72,40 @@ TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
   EXPECT_EQ(not_glb.exit_code, window.exit_code);
   EXPECT_NE(not_glb.output.find("--atlas"), std::string::npos) << not_glb.output;
   EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
+}
+
+TEST(PaintCli, ReportsProgressAsJsonLines) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_progress";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream image(dir / "sample.pgm", std::ios::binary);
+    image << "P5\n8 8\n255\n";
+    for (int k = 0; k < 64; ++k) image << static_cast<char>(37 * k);
+  }
+  const test::CliResult r = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
+                                          (dir / "sample.pgm").string() + " --scale 0.5 --backend cpu --progress json -o " +
+                                          (dir / "out.ply").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream lines(r.output);
+  std::string line;
+  nlohmann::json last_progress, done;
+  int progress_lines = 0;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] != '{') continue;
+    const nlohmann::json event = nlohmann::json::parse(line);
+    ASSERT_EQ(event["task"], "paint");
+    if (event["event"] == "progress") {
+      ++progress_lines;
+      last_progress = event;
+    } else {
+      done = event;
+    }
+  }
+  EXPECT_GT(progress_lines, 2);
+  EXPECT_LE(progress_lines, 202);
+  EXPECT_EQ(last_progress["done"], last_progress["total"]);
+  EXPECT_EQ(last_progress["done"], done["summary"]["visits"]);
+  EXPECT_EQ(r.output.find("wrote "), std::string::npos) << r.output;
 }
 
 TEST(PaintCli, BothBackEndsWriteTheSameFile) {

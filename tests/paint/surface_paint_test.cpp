@@ -182,6 +182,22 @@ TEST_P(SurfacePaint, BatchesAndBackEndsGiveTheSweepsColours) {
   EXPECT_EQ(paint_surface(sphere, image, {}, options, device()).source, sequential.source);
 }
 
+TEST_P(SurfacePaint, ReportsProgressUpToEveryVisit) {
+  PaintOptions options;
+  options.pixels_per_unit = 10.0;
+  std::vector<std::pair<size_t, size_t>> calls;
+  options.progress = [&](size_t done, size_t total) { calls.emplace_back(done, total); };
+  const PaintResult painted = paint_surface(test::icosphere(2), stripes(), {}, options, device());
+  ASSERT_GE(painted.levels, 2);
+  ASSERT_EQ(calls.size(), painted.batches);
+  for (size_t k = 1; k < calls.size(); ++k) {
+    EXPECT_GT(calls[k].first, calls[k - 1].first);
+    EXPECT_EQ(calls[k].second, calls[0].second);
+  }
+  EXPECT_EQ(calls.back().first, painted.visits);
+  EXPECT_EQ(calls.back().second, painted.visits);
+}
+
 TEST(SweepBatches, RunSideBySideOnlyWhatTheSweepWouldNotTellApart) {
   const TriMesh sphere = test::icosphere(3);
   const BaseSurface surface(sphere);
