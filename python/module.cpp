@@ -24,6 +24,8 @@
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
+#include "mesh/measures.h"
+#include "paint/surface_paint.h"
 #include "quilt/broken_elements.h"
 #include "quilt/planar_quilting.h"
 #include "render/png_encoding.h"
@@ -444,6 +446,65 @@ PYBIND11_MODULE(_meshquilt, m) {
       },
       py::arg("base_vertices"), py::arg("base_faces"), py::arg("field_points") = py::none(),
       py::arg("field_directions") = py::none());
+
+  m.def(
+      "paint",
+      [](const Array3d& base_vertices, const Array3i& base_faces,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& image, double scale,
+         double pixels_per_unit, int window, int passes, uint64_t seed, const std::string& backend,
+         std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
+        const auto start = std::chrono::steady_clock::now();
+        if (image.ndim() != 3 || image.shape(2) != 3 || image.shape(0) < 1 || image.shape(1) < 1)
+          throw InputError("paint: image must be an (H, W, 3) array", ErrorKind::invalid_option);
+        ColourImage sample;
+        sample.height = static_cast<int>(image.shape(0));
+        sample.width = static_cast<int>(image.shape(1));
+        const auto pixels = image.unchecked<3>();
+        for (int y = 0; y < sample.height; ++y)
+          for (int x = 0; x < sample.width; ++x) {
+            const glm::dvec3 c(pixels(y, x, 0), pixels(y, x, 1), pixels(y, x, 2));
+            if (!(glm::all(glm::greaterThanEqual(c, glm::dvec3(0.0))) && glm::all(glm::lessThanEqual(c, glm::dvec3(1.0)))))
+              throw InputError("paint: image values must lie in [0, 1]", ErrorKind::invalid_option);
+            sample.rgb.push_back(c);
+          }
+        const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
+        const std::vector<FieldConstraint> constraints =
+            field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
+        PaintOptions options;
+        if (pixels_per_unit > 0.0) {
+          options.pixels_per_unit = pixels_per_unit;
+        } else {
+          if (!(scale > 0.0 && scale <= 10.0))
+            throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
+          options.pixels_per_unit = sample.width / (scale * glm::length(bounding_box(base.positions).extent()));
+        }
+        options.window = window;
+        options.passes = passes;
+        options.seed = seed;
+        const std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
+        PaintResult painted;
+        {
+          py::gil_scoped_release release;
+          painted = paint_surface(base, sample, constraints, options, *device);
+        }
+        py::dict out = dict_of(painted.mesh);
+        py::array_t<uint8_t> colors({static_cast<py::ssize_t>(painted.mesh.num_vertices()), py::ssize_t{3}});
+        auto c = colors.mutable_unchecked<2>();
+        for (size_t v = 0; v < painted.mesh.num_vertices(); ++v)
+          for (int k = 0; k < 3; ++k) c(v, k) = painted.mesh.colors[v][k];
+        out["colors"] = colors;
+        const nlohmann::json stats = {
+            {"pixels_per_unit", options.pixels_per_unit}, {"levels", painted.levels},
+            {"vertices", painted.mesh.num_vertices()},   {"faces", painted.mesh.num_faces()},
+            {"mean_cost", painted.mean_cost},             {"visits", painted.visits},
+            {"batches", painted.batches},                 {"backend", engine::backend_name(device->backend())},
+            {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+        out["stats"] = json_to_python(stats);
+        return out;
+      },
+      py::arg("base_vertices"), py::arg("base_faces"), py::arg("image"), py::arg("scale") = 0.25,
+      py::arg("pixels_per_unit") = 0.0, py::arg("window") = 7, py::arg("passes") = 2, py::arg("seed") = 1,
+      py::arg("backend") = "auto", py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
 
   m.def(
       "embed",

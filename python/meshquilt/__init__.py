@@ -19,7 +19,8 @@ import numpy as np
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "vine_frames", "animate",
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "paint", "vine_frames",
+           "animate",
            "inspect", "render", "edit", "read", "write", "embed"]
 
 
@@ -33,6 +34,7 @@ class Mesh:
     element: Optional[np.ndarray] = None
     source: Optional[np.ndarray] = None
     origin: Optional[np.ndarray] = None
+    colors: Optional[np.ndarray] = None  # per vertex, (N, 3) uint8 sRGB, for painted bases
 
 
 @dataclass
@@ -118,6 +120,20 @@ def guidance(base: MeshLike, field: Optional[Field] = None) -> Tuple[np.ndarray,
     bv, bf = _arrays(base, "base")
     fp, fd = _field_arrays(field)
     return _meshquilt.guidance(bv, bf, fp, fd)
+
+
+def paint(base: MeshLike, image: Any, *, scale: float = 0.25, pixels_per_unit: float = 0.0, window: int = 7,
+          passes: int = 2, seed: int = 1, backend: str = "auto", field: Optional[Field] = None) -> Result:
+    """Colours `base` from an image sample as `meshquilt paint` does (Turk 2001, swept along synth's
+    field): `image` an (H, W, 3) array of colours in [0, 1], row 0 at the top; `scale` the sample's
+    width over the base's bounding-box diagonal, or `pixels_per_unit` given. Returns the base
+    refined until a vertex falls every sample pixel, its `colors` (N, 3) uint8 and `stats`; the
+    same seed gives the same colours as the command line on either back end."""
+    bv, bf = _arrays(base, "base")
+    fp, fd = _field_arrays(field)
+    d = _meshquilt.paint(bv, bf, np.ascontiguousarray(image, dtype=np.float64), scale, pixels_per_unit, window, passes,
+                         seed, backend, fp, fd)
+    return _mesh(d, Result, stats=d["stats"], colors=d["colors"])
 
 
 def vine_frames(count: int, preset: str = "default", seed: int = 1, **options: Any) -> List[np.ndarray]:

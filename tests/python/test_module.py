@@ -124,6 +124,32 @@ def test_a_drawn_field_equals_the_command_lines_field_file():
     assert not np.array_equal(meshquilt.synth(base=base, scale=0.3, seed=2, backend="cpu").vertices, v)
 
 
+def test_paint_equals_the_command_line():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    rng = np.random.default_rng(4)
+    pixels = rng.integers(0, 256, size=(10, 12, 3), dtype=np.uint8)
+    result = meshquilt.paint(base, pixels / 255.0, scale=0.5, seed=3, backend="cpu")
+    with tempfile.TemporaryDirectory() as folder:
+        image_path, out_path = os.path.join(folder, "sample.ppm"), os.path.join(folder, "out.ply")
+        with open(image_path, "wb") as out:
+            out.write(b"P6\n12 10\n255\n" + pixels.tobytes())
+        done = subprocess.run([CLI, "paint", "--base", os.path.join(SOURCE, "data", "sphere.off"), "--image", image_path,
+                               "--scale", "0.5", "--seed", "3", "--backend", "cpu", "--progress", "none", "-o", out_path],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        ply = read_ply(out_path)
+    names, vertices = ply["vertex"]
+    v = np.array([row[:3] for row in vertices], dtype=np.float64)
+    colours = np.array([[row[names.index(c)] for c in ("red", "green", "blue")] for row in vertices], dtype=np.uint8)
+    assert result.colors.dtype == np.uint8 and result.colors.shape == (len(v), 3)
+    assert np.array_equal(result.vertices, v)
+    assert np.array_equal(result.colors, colours)
+    assert len(np.unique(result.colors, axis=0)) > 20
+    assert result.stats["vertices"] == len(v) and result.stats["levels"] > 0
+    with pytest.raises(meshquilt.Error, match="image"):
+        meshquilt.paint(base, pixels, scale=0.5)  # bytes, not colours in [0, 1]
+
+
 def test_guidance_holds_a_drawn_direction_and_is_tangent():
     vertices, faces = read_off(os.path.join(SOURCE, "data", "sphere.off"))
     top = int(np.argmax(vertices[:, 2]))
