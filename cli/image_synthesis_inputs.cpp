@@ -48,4 +48,12 @@ std::unique_ptr<engine::Device> open_synthesis_device(const std::string& backend
   return device;
 }
 
+std::function<void(size_t, size_t)> paint_progress(ProgressReporter& reporter) {
+  return [&reporter, next = size_t{0}](size_t done, size_t total) mutable {
+    if (done < next && done < total) return;
+    next = done + total / 200;
+    reporter.update(static_cast<double>(done), static_cast<double>(total));
+  };
+}
+
 }  // namespace meshquilt::cli

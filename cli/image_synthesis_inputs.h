@@ -2,6 +2,8 @@
 // What `paint` and `relief` read (the base, the image sample, the field and the sample's scale),
 // and the field they write back with --write-field.
 
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +11,7 @@
 #include "device.h"
 #include "mesh/tri_mesh.h"
 #include "paint/colour_image.h"
+#include "progress.h"
 #include "surface/guidance_field.h"
 
 namespace meshquilt::cli {
@@ -33,6 +36,9 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
 //! CPU, if it says, goes to stderr.
 //! \throw InputError for another value; DeviceError when `vulkan` has no device.
 std::unique_ptr<engine::Device> open_synthesis_device(const std::string& backend);
+
+//! PaintOptions::progress for `reporter`: a line per half percent at most, not one per batch.
+std::function<void(size_t, size_t)> paint_progress(ProgressReporter& reporter);
 
 //! Writes one "x y z" line per direction (the field at each output vertex), atomically.
 void write_field_lines(const std::string& file, const std::vector<Vec3>& directions);

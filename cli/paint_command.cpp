@@ -45,12 +45,7 @@ void run_paint(PaintArgs& args) {
   const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
   ProgressReporter progress(progress_mode, "paint");
-  size_t next_report = 0;  // a line per half percent, not per batch
-  args.options.progress = [&](size_t done, size_t total) {
-    if (done < next_report && done < total) return;
-    next_report = done + total / 200;
-    progress.update(static_cast<double>(done), static_cast<double>(total));
-  };
+  args.options.progress = paint_progress(progress);
   const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options, *device);
   nlohmann::json baked;
   if (args.atlas != 0) {

@@ -96,12 +96,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
   const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
   ProgressReporter progress(progress_mode, "relief");
-  size_t next_report = 0;  // a line per half percent, not per batch
-  args.options.paint.progress = [&](size_t done, size_t total) {
-    if (done < next_report && done < total) return;
-    next_report = done + total / 200;
-    progress.update(static_cast<double>(done), static_cast<double>(total));
-  };
+  args.options.paint.progress = paint_progress(progress);
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options, *device);
   write_mesh(relief.mesh, args.output);
   if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);

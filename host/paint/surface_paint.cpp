@@ -133,8 +133,9 @@ double uniform(uint64_t seed, uint64_t vertex, uint64_t pass, uint64_t k) {
 
 class Painter {
  public:
-  Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const ColourImage& sample,
-          engine::Device& device, double pixels_per_unit, const PaintOptions& options, uint64_t seed)
+  Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const std::vector<int32_t>& order,
+          const ColourImage& sample, engine::Device& device, double pixels_per_unit, const PaintOptions& options,
+          uint64_t seed)
       : surface_(surface),
         directions_(directions),
         sample_(sample),
@@ -147,18 +148,16 @@ class Painter {
     source_.assign(n, glm::dvec2(0.0));
     done_.assign(n, 0);
     windows_ = window_neighbours(surface, 0.5 * options.window / pixels_per_unit);
+    schedule_ = sweep_batches(order, windows_, options.max_batch);
     sigma2_ = std::pow(0.25 * options.window, 2.0);
   }
 
-  // One pass over `order`, in batches of vertices whose windows do not reach each other: each
+  // One pass over the sweep, in batches of vertices whose windows do not reach each other: each
   // vertex takes the candidate whose neighbourhood best matches its coloured neighbours' (or all
   // of them, when `whole`). Returns the summed mean mismatch per neighbour.
-  double pass(const std::vector<int32_t>& order, bool whole, uint64_t pass_index) {
+  double pass(bool whole, uint64_t pass_index) {
     double cost = 0.0;
-    for (const std::vector<int32_t>& batch : sweep_batches(order, windows_, options_.max_batch)) {
-      ++batches_;
-      visits_made_ += batch.size();
-      if (options_.progress) options_.progress(*visits_before_ + visits_made_, total_visits_);
+    for (const std::vector<int32_t>& batch : schedule_) {
       work_.clear();
       visits_.clear();
       neighbours_.clear();
@@ -171,6 +170,9 @@ class Painter {
         colour_[visit.vertex] = sample_.sample(source_[visit.vertex]);
         done_[visit.vertex] = 1;
       }
+      ++batches_;
+      visits_made_ += batch.size();
+      if (options_.progress) options_.progress(visits_before_ + visits_made_, total_visits_);
     }
     return cost;
   }
@@ -185,7 +187,7 @@ class Painter {
   }
 
   // What progress reports: visits of the levels before this one, and of the whole job.
-  void count_from(const size_t* visits_before, size_t total_visits) {
+  void count_from(size_t visits_before, size_t total_visits) {
     visits_before_ = visits_before;
     total_visits_ = total_visits;
   }
@@ -322,9 +324,8 @@ class Painter {
   std::vector<glm::dvec2> candidates_;
   std::unordered_set<uint64_t> seen_;
   double sigma2_ = 1.0;
-  size_t batches_ = 0, visits_made_ = 0;
-  const size_t* visits_before_ = &no_visits_;
-  size_t no_visits_ = 0, total_visits_ = 0;
+  std::vector<std::vector<int32_t>> schedule_;
+  size_t batches_ = 0, visits_made_ = 0, visits_before_ = 0, total_visits_ = 0;
 };
 
 // Visits of the whole job: each level's passes over its vertices, a split adding one per edge.
@@ -371,13 +372,13 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     const double pixels_per_unit = std::ldexp(options.pixels_per_unit, -step);
     const BaseSurface surface(mesh);
     result.order = sweep_order(sweep_function(surface, directions));
-    Painter painter(surface, directions, pyramid[step], device, pixels_per_unit, options, options.seed + step);
-    painter.count_from(&result.visits, total);
+    Painter painter(surface, directions, result.order, pyramid[step], device, pixels_per_unit, options, options.seed + step);
+    painter.count_from(result.visits, total);
     // The coarsest level is swept; a finer one starts from the coarser positions carried over
     // and is corrected with whole neighbourhoods.
     const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);
     if (step < coarsest) painter.start_from(sources);
-    for (int pass = 0; pass < passes; ++pass) cost = painter.pass(result.order, pass > 0 || step < coarsest, pass);
+    for (int pass = 0; pass < passes; ++pass) cost = painter.pass(pass > 0 || step < coarsest, pass);
     sources = painter.sources();
     result.batches += painter.batches();
     result.visits += painter.visits();
