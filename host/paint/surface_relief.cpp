@@ -18,6 +18,32 @@ namespace {
 // fold's depth).
 constexpr int kCrossingRounds = 12;
 
+// The base's smooth normal at each vertex of its split: the base's vertex normals interpolated
+// over the base face the vertex lies in. The split's own normals are the base faces' inside each
+// face and turn at once across its edges, where a raised sheet would fold on itself.
+std::vector<Vec3> smooth_normals(const TriMesh& base, const TriMesh& split, int levels) {
+  const BaseSurface surface(base);
+  std::vector<Vec3> out(split.num_vertices(), Vec3(0.0));
+  std::vector<uint8_t> done(split.num_vertices(), 0);
+  for (size_t g = 0; g < split.num_faces(); ++g) {
+    const Tri& t = base.triangles[g >> (2 * levels)];
+    const Vec3 a = base.positions[t[0]], e1 = base.positions[t[1]] - a, e2 = base.positions[t[2]] - a;
+    const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const double det = d11 * d22 - d12 * d12;
+    for (int32_t v : split.triangles[g]) {
+      if (done[v]) continue;
+      done[v] = 1;
+      const Vec3 q = split.positions[v] - a;
+      const double p1 = glm::dot(q, e1), p2 = glm::dot(q, e2);
+      const double s = det > 0.0 ? (d22 * p1 - d12 * p2) / det : 0.0, r = det > 0.0 ? (d11 * p2 - d12 * p1) / det : 0.0;
+      const Vec3 n = (1.0 - s - r) * surface.vertex_normals[t[0]] + s * surface.vertex_normals[t[1]] +
+                     r * surface.vertex_normals[t[2]];
+      out[v] = glm::length(n) > 1e-12 ? glm::normalize(n) : surface.face_normals[g >> (2 * levels)];
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
@@ -34,6 +60,7 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   result.directions = painted.directions;
   const TriMesh& mesh = painted.mesh;
   const BaseSurface surface(mesh);
+  const std::vector<Vec3> normals = smooth_normals(base, mesh, painted.levels);
   const FaceBvh bvh(mesh);
   const size_t n = mesh.num_vertices();
   result.heights.resize(n);
@@ -43,7 +70,7 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
     const double signal = luma(glm::dvec3(c[0], c[1], c[2])) / 255.0;
     double h = options.height * signal;
     const Vec3& p = mesh.positions[v];
-    const Vec3& normal = surface.vertex_normals[v];
+    const Vec3& normal = normals[v];
     // Room along the normal: the surface the ray meets, past the vertex's own faces.
     double room = std::numeric_limits<double>::infinity();
     double nearest_edge = std::numeric_limits<double>::infinity();
@@ -54,7 +81,7 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
     // Where neighbouring normals converge (concave), at about the radius of curvature.
     for (const auto& [w, length] : surface.edges[v]) {
       const Vec3 e = mesh.positions[w] - p;
-      const double converge = -glm::dot(surface.vertex_normals[w] - normal, e) / (length * length);
+      const double converge = -glm::dot(normals[w] - normal, e) / (length * length);
       if (converge > 0.0) room = std::min(room, 1.0 / converge);
     }
     if (h > options.clearance * room) {
@@ -82,7 +109,7 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
     for (size_t v = 0; v < n; ++v) {
       if (!lower[v] || result.heights[v] <= 0.0) continue;
       result.heights[v] = round + 1 < kCrossingRounds ? 0.5 * result.heights[v] : 0.0;
-      result.mesh.positions[v] = mesh.positions[v] + result.heights[v] * surface.vertex_normals[v];
+      result.mesh.positions[v] = mesh.positions[v] + result.heights[v] * normals[v];
       if (!lowered[v]) {
         lowered[v] = 1;
         ++result.lowered_crossing;

@@ -1,11 +1,12 @@
 #pragma once
 //! Relief from an image over a surface: a height signal synthesized as paint synthesizes colour
-//! (the sample's luma, 0 black to 1 white), then the refined base displaced along its vertex
-//! normals by height x signal. Heights are clamped where the displaced surface would pass through
-//! itself: each to a share of the room along its normal (the distance to the surface met by a ray
-//! along it) and of the radius of curvature where the surface is concave (neighbouring normals
-//! converge there); then, where faces still cross, their vertices' heights are halved until none
-//! do. Connectivity is the base's refined one, so a closed base stays closed.
+//! (the sample's luma, 0 black to 1 white), then the refined base displaced by height x signal
+//! along the base's smooth normals (its vertex normals interpolated over each face). Heights are
+//! clamped where the displaced surface would pass through itself: each to a share of the room
+//! along its normal (the distance to the surface met by a ray along it) and of the radius of
+//! curvature where the surface is concave (neighbouring normals converge there); then, where
+//! faces still cross, their vertices' heights are halved until none do. Connectivity is the
+//! base's refined one, so a closed base stays closed.
 
 #include <vector>
 

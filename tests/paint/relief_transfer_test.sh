@@ -8,10 +8,10 @@ meshquilt=$1 meshes=$2 work=$3
 [ -f "$meshes/armadillo.off" ] && [ -f "$meshes/bunny.off" ] || { echo "skipped: $meshes not found"; exit 77; }
 source "$(dirname "$0")/numpy_python.sh"
 mkdir -p "$work"
-# The detail's own height, scaled as its width is, is more than the bunny's creases hold (at the
-# default --scale 0.25, 4.8% of its diagonal: 35% of the vertices lowered, KS 0.28; at 0.1,
-# 1.9%: 19% lowered, KS 0.11); half of that at 0.1 is lowered on 11%.
-"$meshquilt" relief --base "$meshes/bunny.off" --from "$meshes/armadillo.off" --scale 0.1 --height 0.0025 \
+# The detail at its own height, scaled as its width is (1.9% of the bunny's diagonal at
+# --scale 0.1): raised along the base's smooth normals, 5% of the vertices are clamped to their
+# room and KS is 0.036; at the default --scale 0.25 (4.8%), 0.115.
+"$meshquilt" relief --base "$meshes/bunny.off" --from "$meshes/armadillo.off" --scale 0.1 \
   --write-sample "$work/sample.pgm" --stats "$work/stats.json" -o "$work/relief.ply"
 "$python" "$(dirname "$0")/relief_heights.py" --base "$meshes/bunny.off" --relief "$work/relief.ply" \
   --sample "$work/sample.pgm" --stats "$work/stats.json" --max-ks 0.1
