@@ -44,24 +44,20 @@ struct ReliefArgs {
 // --pixels-per-unit), its heights scaled as its widths are unless --height is given.
 nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, bool height_given, bool ppu_given) {
   const TriMesh model = prepare_base(read_mesh(args.model), args.model);
-  const double model_diagonal = glm::length(bounding_box(model.positions).extent());
-  const double smoothing = args.smoothing > 0.0 ? args.smoothing : 0.01 * model_diagonal;
-  const std::vector<double> heights = extract_detail(model, smoothing);
   if (!args.region.empty() && args.region.size() != 4)
     throw InputError("--region: expected X,Y,Z,RADIUS in model units", ErrorKind::invalid_option);
-  const double radius = args.region.empty() ? 0.1 * model_diagonal : args.region[3];
-  if (!(radius > 0.0)) throw InputError("--region: expected a positive radius", ErrorKind::invalid_option);
-  const Vec3 centre = args.region.empty() ? richest_detail_centre(model, heights, radius)
-                                          : Vec3(args.region[0], args.region[1], args.region[2]);
-  const DetailImage detail = detail_image(model, heights, centre, radius, args.pixels);
+  std::optional<DetailRegion> region;
+  if (!args.region.empty()) region = DetailRegion{Vec3(args.region[0], args.region[1], args.region[2]), args.region[3]};
+  const DetailSample sample = detail_sample(model, args.smoothing, region, args.pixels);
+  const DetailImage& detail = sample.detail;
   in.sample = detail.image;
   // As --image: the sample's width --scale x the base's diagonal; heights scale with widths.
   if (!ppu_given) in.pixels_per_unit = args.pixels / (args.scale * in.diagonal);
   const double size = detail.pixels_per_unit / in.pixels_per_unit;  // base units per model unit
   if (!height_given) args.options.height = (detail.high - detail.low) * size;
   return {{"model", args.model},
-          {"smoothing", smoothing},
-          {"region", {centre.x, centre.y, centre.z, radius}},
+          {"smoothing", sample.smoothing},
+          {"region", {sample.centre.x, sample.centre.y, sample.centre.z, sample.radius}},
           {"detail_low", detail.low},
           {"detail_high", detail.high}};
 }

@@ -25,7 +25,9 @@
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "mesh/measures.h"
+#include "paint/detail_extraction.h"
 #include "paint/surface_paint.h"
+#include "paint/surface_relief.h"
 #include "quilt/broken_elements.h"
 #include "quilt/planar_quilting.h"
 #include "render/png_encoding.h"
@@ -261,6 +263,37 @@ struct Job {
 
 }  // namespace
 
+// An (H, W, 3) or, where `grey` allows, (H, W) array of values in [0, 1] as a sample image.
+ColourImage sample_image(const py::array_t<double, py::array::c_style | py::array::forcecast>& image, const char* what,
+                         bool grey) {
+  const bool plane = grey && image.ndim() == 2;
+  if (!plane && (image.ndim() != 3 || image.shape(2) != 3))
+    throw InputError(std::string(what) + (grey ? ": image must be an (H, W) or (H, W, 3) array"
+                                               : ": image must be an (H, W, 3) array"),
+                     ErrorKind::invalid_option);
+  if (image.shape(0) < 1 || image.shape(1) < 1)
+    throw InputError(std::string(what) + ": image is empty", ErrorKind::invalid_option);
+  ColourImage sample;
+  sample.height = static_cast<int>(image.shape(0));
+  sample.width = static_cast<int>(image.shape(1));
+  const double* pixels = image.data();
+  for (size_t k = 0; k < static_cast<size_t>(sample.width) * sample.height; ++k) {
+    const glm::dvec3 c = plane ? glm::dvec3(pixels[k]) : glm::dvec3(pixels[3 * k], pixels[3 * k + 1], pixels[3 * k + 2]);
+    if (!(glm::all(glm::greaterThanEqual(c, glm::dvec3(0.0))) && glm::all(glm::lessThanEqual(c, glm::dvec3(1.0)))))
+      throw InputError(std::string(what) + ": image values must lie in [0, 1]", ErrorKind::invalid_option);
+    sample.rgb.push_back(c);
+  }
+  return sample;
+}
+
+// Sample pixels per base unit: given, or the sample's width `scale` x the base's diagonal.
+double sample_pixels_per_unit(const TriMesh& base, int width, double scale, double pixels_per_unit) {
+  if (pixels_per_unit > 0.0) return pixels_per_unit;
+  if (!(scale > 0.0 && scale <= 10.0))
+    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
+  return width / (scale * glm::length(bounding_box(base.positions).extent()));
+}
+
 PYBIND11_MODULE(_meshquilt, m) {
   m.doc() = "meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting";
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
@@ -454,30 +487,12 @@ PYBIND11_MODULE(_meshquilt, m) {
          double pixels_per_unit, int window, int passes, uint64_t seed, const std::string& backend,
          std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
         const auto start = std::chrono::steady_clock::now();
-        if (image.ndim() != 3 || image.shape(2) != 3 || image.shape(0) < 1 || image.shape(1) < 1)
-          throw InputError("paint: image must be an (H, W, 3) array", ErrorKind::invalid_option);
-        ColourImage sample;
-        sample.height = static_cast<int>(image.shape(0));
-        sample.width = static_cast<int>(image.shape(1));
-        const auto pixels = image.unchecked<3>();
-        for (int y = 0; y < sample.height; ++y)
-          for (int x = 0; x < sample.width; ++x) {
-            const glm::dvec3 c(pixels(y, x, 0), pixels(y, x, 1), pixels(y, x, 2));
-            if (!(glm::all(glm::greaterThanEqual(c, glm::dvec3(0.0))) && glm::all(glm::lessThanEqual(c, glm::dvec3(1.0)))))
-              throw InputError("paint: image values must lie in [0, 1]", ErrorKind::invalid_option);
-            sample.rgb.push_back(c);
-          }
+        const ColourImage sample = sample_image(image, "paint", false);
         const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
         const std::vector<FieldConstraint> constraints =
             field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
         PaintOptions options;
-        if (pixels_per_unit > 0.0) {
-          options.pixels_per_unit = pixels_per_unit;
-        } else {
-          if (!(scale > 0.0 && scale <= 10.0))
-            throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
-          options.pixels_per_unit = sample.width / (scale * glm::length(bounding_box(base.positions).extent()));
-        }
+        options.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
         options.window = window;
         options.passes = passes;
         options.seed = seed;
@@ -505,6 +520,83 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("base_vertices"), py::arg("base_faces"), py::arg("image"), py::arg("scale") = 0.25,
       py::arg("pixels_per_unit") = 0.0, py::arg("window") = 7, py::arg("passes") = 2, py::arg("seed") = 1,
       py::arg("backend") = "auto", py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
+
+  m.def(
+      "relief",
+      [](const Array3d& base_vertices, const Array3i& base_faces,
+         const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& image, double height,
+         std::optional<Array3d> model_vertices, std::optional<Array3i> model_faces,
+         std::optional<std::vector<double>> region, double smoothing, int pixels, double scale, double pixels_per_unit,
+         int window, int passes, uint64_t seed, const std::string& backend, double clearance,
+         std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
+        const auto start = std::chrono::steady_clock::now();
+        if (image.has_value() == model_vertices.has_value())
+          throw InputError("relief: expected one of image and model", ErrorKind::invalid_option);
+        if (image && !(height > 0.0)) throw InputError("relief: height is required with an image", ErrorKind::invalid_option);
+        const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
+        const std::vector<FieldConstraint> constraints =
+            field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
+        ReliefOptions options;
+        options.clearance = clearance;
+        options.height = height;
+        ColourImage sample;
+        nlohmann::json from;
+        if (image) {
+          sample = sample_image(*image, "relief", true);
+          options.paint.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
+        } else {
+          if (!model_faces) throw InputError("relief: model needs its faces", ErrorKind::invalid_option);
+          const TriMesh model = prepare_base(mesh_from(*model_vertices, *model_faces, "model"), "model");
+          if (region && region->size() != 4)
+            throw InputError("relief: region must be (x, y, z, radius) in model units", ErrorKind::invalid_option);
+          std::optional<DetailRegion> ball;
+          if (region) ball = DetailRegion{Vec3((*region)[0], (*region)[1], (*region)[2]), (*region)[3]};
+          const DetailSample detail = detail_sample(model, smoothing, ball, pixels);
+          sample = detail.detail.image;
+          options.paint.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
+          // Heights scale as widths do, unless a height is given.
+          if (!(height > 0.0))
+            options.height = (detail.detail.high - detail.detail.low) * detail.detail.pixels_per_unit /
+                             options.paint.pixels_per_unit;
+          from = {{"smoothing", detail.smoothing},
+                  {"region", {detail.centre.x, detail.centre.y, detail.centre.z, detail.radius}},
+                  {"detail_low", detail.detail.low},
+                  {"detail_high", detail.detail.high}};
+        }
+        options.paint.window = window;
+        options.paint.passes = passes;
+        options.paint.seed = seed;
+        const std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
+        ReliefResult relief;
+        {
+          py::gil_scoped_release release;
+          relief = relief_surface(base, sample, constraints, options, *device);
+        }
+        py::dict out = dict_of(relief.mesh);
+        py::array_t<double> heights(static_cast<py::ssize_t>(relief.heights.size()));
+        std::copy(relief.heights.begin(), relief.heights.end(), heights.mutable_data());
+        out["heights"] = heights;
+        double highest = 0.0;
+        for (double h : relief.heights) highest = std::max(highest, h);
+        nlohmann::json stats = {{"pixels_per_unit", options.paint.pixels_per_unit},
+                                {"levels", relief.levels},
+                                {"vertices", relief.mesh.num_vertices()},
+                                {"faces", relief.mesh.num_faces()},
+                                {"height", options.height},
+                                {"highest", highest},
+                                {"clamped_vertices", relief.clamped},
+                                {"crossing_lowered_vertices", relief.lowered_crossing},
+                                {"backend", engine::backend_name(device->backend())},
+                                {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+        if (!from.is_null()) stats["from"] = from;
+        out["stats"] = json_to_python(stats);
+        return out;
+      },
+      py::arg("base_vertices"), py::arg("base_faces"), py::arg("image") = py::none(), py::arg("height") = 0.0,
+      py::arg("model_vertices") = py::none(), py::arg("model_faces") = py::none(), py::arg("region") = py::none(),
+      py::arg("smoothing") = 0.0, py::arg("pixels") = 32, py::arg("scale") = 0.25, py::arg("pixels_per_unit") = 0.0,
+      py::arg("window") = 7, py::arg("passes") = 2, py::arg("seed") = 1, py::arg("backend") = "auto",
+      py::arg("clearance") = 0.4, py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
 
   m.def(
       "embed",

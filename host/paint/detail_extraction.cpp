@@ -143,4 +143,17 @@ Vec3 richest_detail_centre(const TriMesh& model, const std::vector<double>& heig
   return best_centre;
 }
 
+DetailSample detail_sample(const TriMesh& model, double smoothing, const std::optional<DetailRegion>& region,
+                           int pixels) {
+  const double diagonal = glm::length(bounding_box(model.positions).extent());
+  DetailSample out;
+  out.smoothing = smoothing > 0.0 ? smoothing : 0.01 * diagonal;
+  const std::vector<double> heights = extract_detail(model, out.smoothing);
+  out.radius = region ? region->radius : 0.1 * diagonal;
+  if (!(out.radius > 0.0)) throw InputError("{region}: expected a positive radius", ErrorKind::invalid_option);
+  out.centre = region ? region->centre : richest_detail_centre(model, heights, out.radius);
+  out.detail = detail_image(model, heights, out.centre, out.radius, pixels);
+  return out;
+}
+
 }  // namespace meshquilt

@@ -3,6 +3,7 @@
 //! itself, measured along the smoothed copy's normals, and a patch of it resampled into a height
 //! image, which `relief` synthesizes over another base as it does a height image.
 
+#include <optional>
 #include <vector>
 
 #include "mesh/tri_mesh.h"
@@ -37,5 +38,25 @@ DetailImage detail_image(const TriMesh& model, const std::vector<double>& height
 //! Where the model's detail is strongest: of vertices spread evenly over it, the one whose
 //! heights within `radius` (in space) vary most.
 Vec3 richest_detail_centre(const TriMesh& model, const std::vector<double>& heights, double radius);
+
+//! The sample `relief --from` takes from a model: its detail over a ball of it.
+struct DetailSample {
+  DetailImage detail;
+  double smoothing = 0.0;  //!< L, model units
+  Vec3 centre{0.0};        //!< of the ball sampled
+  double radius = 0.0;
+};
+
+struct DetailRegion {
+  Vec3 centre{0.0};
+  double radius = 0.0;
+};
+
+//! smoothing: L in model units, or 0 for 0.01 of the model's bounding-box diagonal; region: the
+//! ball sampled, or none for one of 0.1 of the diagonal round its richest detail.
+//! \throw InputError(invalid_option) "{region}: ..." for a radius that is not positive, and as
+//!        detail_image; SolverError as extract_detail.
+DetailSample detail_sample(const TriMesh& model, double smoothing, const std::optional<DetailRegion>& region,
+                           int pixels);
 
 }  // namespace meshquilt

@@ -19,7 +19,8 @@ import numpy as np
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "paint", "vine_frames",
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "paint", "relief",
+           "vine_frames",
            "animate",
            "inspect", "render", "edit", "read", "write", "embed"]
 
@@ -43,6 +44,7 @@ class Result(Mesh):
 
     stats: Dict[str, Any] = field(default_factory=dict)
     texture: Optional[bytes] = None  # with keep_texture over a base: the layer in texture space (.mqt bytes)
+    heights: Optional[np.ndarray] = None  # relief: (N,) each vertex's displacement along the base's smooth normal
 
 
 MeshLike = Union[Mesh, Tuple[Any, Any]]
@@ -134,6 +136,28 @@ def paint(base: MeshLike, image: Any, *, scale: float = 0.25, pixels_per_unit: f
     d = _meshquilt.paint(bv, bf, np.ascontiguousarray(image, dtype=np.float64), scale, pixels_per_unit, window, passes,
                          seed, backend, fp, fd)
     return _mesh(d, Result, stats=d["stats"], colors=d["colors"])
+
+
+def relief(base: MeshLike, heights: Any = None, *, height: float = 0.0, model: Optional[MeshLike] = None,
+           region: Optional[Sequence[float]] = None, smoothing: float = 0.0, pixels: int = 32, scale: float = 0.25,
+           pixels_per_unit: float = 0.0, window: int = 7, passes: int = 2, seed: int = 1, backend: str = "auto",
+           clearance: float = 0.4, field: Optional[Field] = None) -> Result:
+    """Raises a relief over `base` as `meshquilt relief` does: from `heights`, an (H, W) array (or
+    (H, W, 3), read by its luma) in [0, 1] with white high, raised by `height` base units; or from
+    `model`'s detail (it minus its copy smoothed over `smoothing` model units), over `region`
+    (x, y, z, radius in model units, or round its richest detail) flattened into `pixels` a side,
+    at its own height scaled as its width is unless `height` is given. Returns the base refined
+    and raised, `heights` (N,) each vertex's displacement along the base's smooth normal, and
+    `stats`; the same seed gives the command line's vertices on either back end."""
+    bv, bf = _arrays(base, "base")
+    fp, fd = _field_arrays(field)
+    mv = mf = None
+    if model is not None:
+        mv, mf = _arrays(model, "model")
+    image = None if heights is None else np.ascontiguousarray(heights, dtype=np.float64)
+    d = _meshquilt.relief(bv, bf, image, height, mv, mf, None if region is None else [float(x) for x in region],
+                          smoothing, pixels, scale, pixels_per_unit, window, passes, seed, backend, clearance, fp, fd)
+    return _mesh(d, Result, stats=d["stats"], heights=d["heights"])
 
 
 def vine_frames(count: int, preset: str = "default", seed: int = 1, **options: Any) -> List[np.ndarray]:

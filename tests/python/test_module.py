@@ -150,6 +150,60 @@ def test_paint_equals_the_command_line():
         meshquilt.paint(base, pixels, scale=0.5)  # bytes, not colours in [0, 1]
 
 
+def cli_relief(*args):
+    with tempfile.TemporaryDirectory() as folder:
+        out_path = os.path.join(folder, "out.ply")
+        done = subprocess.run([CLI, "relief", "--base", os.path.join(SOURCE, "data", "sphere.off"), "--backend", "cpu",
+                               "--progress", "none", "-o", out_path] + [a(folder) if callable(a) else a for a in args],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        names, vertices = read_ply(out_path)["vertex"]
+    return np.array([row[:3] for row in vertices], dtype=np.float64)
+
+
+def test_relief_equals_the_command_line():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    rng = np.random.default_rng(6)
+    grey = rng.integers(0, 256, size=(10, 12), dtype=np.uint8)
+    result = meshquilt.relief(base, grey / 255.0, height=0.05, scale=0.5, seed=3, backend="cpu")
+
+    def write_pgm(folder):
+        path = os.path.join(folder, "heights.pgm")
+        with open(path, "wb") as out:
+            out.write(b"P5\n12 10\n255\n" + grey.tobytes())
+        return path
+
+    v = cli_relief("--image", write_pgm, "--height", "0.05", "--scale", "0.5", "--seed", "3")
+    assert np.array_equal(result.vertices, v)
+    assert result.heights.shape == (len(v),) and result.heights.dtype == np.float64
+    assert result.heights.min() >= 0.0 and result.heights.max() <= 0.05 + 1e-12
+    assert result.heights.max() > 0.03  # raised, not left flat
+    assert result.stats["height"] == 0.05 and result.stats["vertices"] == len(v)
+
+    # A model with bumps of its own: its detail, at its own height, as `relief --from` takes it.
+    mv, mf = base
+    theta = np.arctan2(mv[:, 1], mv[:, 0])
+    bumpy = mv * (1.0 + 0.04 * np.sin(6.0 * theta) * np.sin(5.0 * np.arccos(np.clip(mv[:, 2], -1, 1))))[:, None]
+
+    def write_model(folder):
+        path = os.path.join(folder, "bumpy.off")
+        with open(path, "w") as out:
+            out.write("OFF\n%d %d 0\n" % (len(bumpy), len(mf)))
+            out.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in bumpy)
+            out.writelines("3 %d %d %d\n" % tuple(t) for t in mf)
+        return path
+
+    from_model = meshquilt.relief(base, model=(bumpy, mf), pixels=16, scale=0.5, seed=2, backend="cpu")
+    assert np.array_equal(from_model.vertices, cli_relief("--from", write_model, "--pixels", "16", "--scale", "0.5",
+                                                          "--seed", "2"))
+    taken = from_model.stats["from"]
+    assert taken["detail_high"] > taken["detail_low"] and len(taken["region"]) == 4
+    with pytest.raises(meshquilt.Error, match="one of"):
+        meshquilt.relief(base, grey / 255.0, height=0.05, model=(bumpy, mf))
+    with pytest.raises(meshquilt.Error, match="height"):
+        meshquilt.relief(base, grey / 255.0)
+
+
 def test_guidance_holds_a_drawn_direction_and_is_tangent():
     vertices, faces = read_off(os.path.join(SOURCE, "data", "sphere.off"))
     top = int(np.argmax(vertices[:, 2]))
