@@ -53,6 +53,13 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
     select_share: bpy.props.FloatProperty(name="Share", default=0.1, min=0.0, max=1.0)
     frames: bpy.props.IntProperty(name="Frames", default=12, min=1, max=1000,
                                   description="Frames of the built-in vine's sway cycle")
+    paint_image: bpy.props.PointerProperty(name="Image", type=bpy.types.Image,
+                                           description="The sample painted over the active mesh (Turk 2001)")
+    paint_scale: bpy.props.FloatProperty(name="Image scale", default=0.25, min=0.001, max=10.0,
+                                         description="The image's width over the base's bounding-box diagonal")
+    relief_height: bpy.props.FloatProperty(name="Relief height", default=0.0, min=0.0,
+                                           description="Raise the image's luma (white high) by this many base "
+                                                       "units instead of colouring; 0: colour only")
     guide_object: bpy.props.PointerProperty(
         name="Guide", type=bpy.types.Object, poll=lambda self, obj: obj.type in {"CURVE", "GPENCIL"},
         description="A curve or grease-pencil object whose strokes, drawn over the base, orient the "
@@ -146,11 +153,11 @@ def make_job(context, base):
                               executable=prefs.executable if prefs else "meshquilt", field=field)
 
 
-def add_result_object(context, base, result):
+def add_result_object(context, base, result, suffix="quilt"):
     """The result as a new object beside the base, with face attributes `element` and `source`
     and one material per source."""
     vertices, faces = result["vertices"], result["faces"]
-    mesh = bpy.data.meshes.new(base.name + "_quilt")
+    mesh = bpy.data.meshes.new(base.name + "_" + suffix)
     mesh.vertices.add(len(vertices))
     mesh.vertices.foreach_set("co", np.asarray(vertices, dtype=np.float64).ravel())
     mesh.loops.add(faces.size)
@@ -244,6 +251,80 @@ class MESHQUILT_OT_create(bpy.types.Operator):
             return {"CANCELLED"}
         obj = add_result_object(context, self._base, self._job.result)
         self.report({"INFO"}, "meshquilt: %d faces in %s" % (len(self._job.result["faces"]), obj.name))
+        return {"FINISHED"}
+
+
+def image_array(image):
+    """A Blender image's pixels as an (H, W, 3) array in [0, 1], row 0 at the top (Blender keeps
+    the bottom row first); 8-bit images as stored (sRGB), as the command line reads a PNG."""
+    width, height = image.size
+    pixels = np.empty(width * height * 4, dtype=np.float32)
+    image.pixels.foreach_get(pixels)
+    return np.clip(pixels.reshape(height, width, 4)[::-1, :, :3].astype(np.float64), 0.0, 1.0)
+
+
+def srgb_to_linear(c):
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def add_painted_object(context, base, result, name):
+    """The painted (or raised) base as a new object: a painted one with its colours as the point
+    colour attribute `meshquilt_colour`, shown by its material; a raised one with each vertex's
+    height as the point attribute `meshquilt_height`."""
+    obj = add_result_object(context, base, {"vertices": result.vertices, "faces": result.faces}, name)
+    mesh = obj.data
+    if result.colors is not None:
+        colours = np.ones((len(result.vertices), 4))
+        colours[:, :3] = srgb_to_linear(result.colors / 255.0)
+        attribute = mesh.color_attributes.new("meshquilt_colour", "BYTE_COLOR", "POINT")
+        attribute.data.foreach_set("color", colours.ravel())
+        material = bpy.data.materials.new(mesh.name)
+        material.use_nodes = True
+        nodes = material.node_tree.nodes
+        colour = nodes.new("ShaderNodeVertexColor")
+        colour.layer_name = "meshquilt_colour"
+        material.node_tree.links.new(colour.outputs["Color"], nodes["Principled BSDF"].inputs["Base Color"])
+        mesh.materials.append(material)
+    if result.heights is not None:
+        attribute = mesh.attributes.new("meshquilt_height", "FLOAT", "POINT")
+        attribute.data.foreach_set("value", np.asarray(result.heights, dtype=np.float64))
+    mesh.update()
+    return obj
+
+
+class MESHQUILT_OT_paint(bpy.types.Operator):
+    """Colour the active mesh from the image, swept along the guide's field (Turk 2001); with a
+    relief height, raise the image's luma over it instead (a new object either way)"""
+    bl_idname = "meshquilt.paint"
+    bl_label = "Paint from image"
+
+    @classmethod
+    def poll(cls, context):
+        return context.active_object is not None and context.active_object.type == "MESH"
+
+    def execute(self, context):
+        s = settings_of(context)
+        if s.paint_image is None or s.paint_image.size[0] == 0:
+            self.report({"ERROR"}, "meshquilt: choose an image to paint from")
+            return {"CANCELLED"}
+        module = module_or_report(self, context, "painting")
+        if module is None:
+            return {"CANCELLED"}
+        base = context.active_object
+        arrays = mesh_arrays(base)
+        field = guide_field(s.guide_object, base) if s.guide_object else None
+        image = image_array(s.paint_image)
+        try:
+            if s.relief_height > 0.0:
+                result = module.relief(arrays, image, height=s.relief_height, scale=s.paint_scale, seed=s.seed,
+                                       field=field)
+            else:
+                result = module.paint(arrays, image, scale=s.paint_scale, seed=s.seed, field=field)
+        except module.Error as e:
+            self.report({"ERROR"}, "meshquilt: %s" % e)
+            return {"CANCELLED"}
+        obj = add_painted_object(context, base, result, "relief" if s.relief_height > 0.0 else "painted")
+        self.report({"INFO"}, "meshquilt: %d vertices in %s" % (len(result.vertices), obj.name))
         return {"FINISHED"}
 
 
@@ -562,11 +643,16 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
         box = layout.box()
         box.prop(s, "select_share")
         box.operator(MESHQUILT_OT_select.bl_idname).mode = "RANDOM"
+        box = layout.box()
+        box.template_ID(s, "paint_image", open="image.open")
+        box.prop(s, "paint_scale")
+        box.prop(s, "relief_height")
+        box.operator(MESHQUILT_OT_paint.bl_idname)
 
 
 classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
            MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, MESHQUILT_OT_sample_scene,
-           MESHQUILT_OT_follow_frames, VIEW3D_PT_meshquilt)
+           MESHQUILT_OT_follow_frames, MESHQUILT_OT_paint, VIEW3D_PT_meshquilt)
 
 
 def register():

@@ -4,7 +4,8 @@ It enables the add-on, quilts the default cube with the small chain mail through
 and the Create operator, and through the executable where the module is missing, checks the new object against the module's own result, cancels a job
 and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows the cube's shape-key animation as shape keys, follows a guide
 curve drawn over the base and previews its field, plays the built-in vine's sway as shape keys,
-adds each sample scene and weaves the sample torus along its guide, and parses the extension manifest."""
+adds each sample scene and weaves the sample torus along its guide, paints the cube from an image
+and raises it as a relief, and parses the extension manifest."""
 import os
 import sys
 import tomllib
@@ -218,6 +219,53 @@ check(np.abs(np.sum(radial * directions[:, :2], axis=1) / np.linalg.norm(directi
 settings.small, settings.scale = True, 0.45
 check(bpy.ops.meshquilt.create() == {"FINISHED"}, "Create weaves the torus along its guide")
 settings.guide_object = None
+
+# Paint from image: an image made here painted over the cube as the module paints it, then raised.
+cube = bpy.data.objects["Cube"]
+bpy.context.view_layer.objects.active = cube
+rgb = np.random.default_rng(3).integers(0, 256, size=(12, 16, 3)) / 255.0  # row 0 at the top
+image = bpy.data.images.new("meshquilt_sample", 16, 12)
+rgba = np.ones((12, 16, 4))
+rgba[..., :3] = rgb
+image.pixels.foreach_set(rgba[::-1].ravel().astype(np.float32))  # Blender keeps the bottom row first
+read_back = meshquilt_blender.image_array(image)
+check(np.abs(read_back - rgb).max() < 1e-6, "the image is read with row 0 at the top")
+settings.paint_image, settings.paint_scale, settings.seed, settings.relief_height = image, 0.5, 4, 0.0
+before = set(bpy.data.objects.keys())
+check(bpy.ops.meshquilt.paint() == {"FINISHED"}, "Paint finishes")
+painted = [bpy.data.objects[name] for name in set(bpy.data.objects.keys()) - before]
+check(len(painted) == 1, "Paint adds one object")
+expected = meshquilt.paint(meshquilt_blender.mesh_arrays(cube), read_back, scale=0.5, seed=4)
+mesh = painted[0].data
+co = np.empty(len(mesh.vertices) * 3)
+mesh.vertices.foreach_get("co", co)
+check(len(mesh.vertices) == len(expected.vertices) and np.allclose(co.reshape(-1, 3), expected.vertices, atol=1e-6),
+      "the painted object has the module's vertices")
+linear = np.empty(len(mesh.vertices) * 4)
+mesh.color_attributes["meshquilt_colour"].data.foreach_get("color", linear)
+linear = linear.reshape(-1, 4)[:, :3]
+srgb = np.where(linear <= 0.0031308, 12.92 * linear, 1.055 * np.power(linear, 1 / 2.4) - 0.055)
+check(np.abs(np.rint(255 * srgb) - expected.colors).max() <= 1 and len(np.unique(expected.colors, axis=0)) > 20,
+      "its colour attribute holds the module's colours")
+check(mesh.materials[0].node_tree.nodes["Color Attribute"].layer_name == "meshquilt_colour",
+      "its material shows them")
+settings.relief_height = 0.05
+before = set(bpy.data.objects.keys())
+check(bpy.ops.meshquilt.paint() == {"FINISHED"}, "Paint raises a relief")
+raised = [bpy.data.objects[name] for name in set(bpy.data.objects.keys()) - before][0].data
+expected = meshquilt.relief(meshquilt_blender.mesh_arrays(cube), read_back, height=0.05, scale=0.5, seed=4)
+heights = np.empty(len(raised.vertices))
+raised.attributes["meshquilt_height"].data.foreach_get("value", heights)
+check(np.allclose(heights, expected.heights, atol=1e-6) and heights.max() > 0.03, "the relief has the module's heights")
+settings.paint_image = None
+before = set(bpy.data.objects.keys())
+try:
+    bpy.ops.meshquilt.paint()
+    refused = ""
+except RuntimeError as e:  # an operator's ERROR report reaches a script as an exception
+    refused = str(e)
+check("choose an image" in refused and set(bpy.data.objects.keys()) == before,
+      "Paint without an image reports it and changes nothing")
 
 manifest = tomllib.load(open(os.path.join(source, "blender", "meshquilt_blender", "blender_manifest.toml"), "rb"))
 check(manifest["type"] == "add-on" and manifest["id"] == "meshquilt", "the extension manifest parses")
