@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates docs/blender.md's pictures: the add-on's panel after a modal Create in Blender's
-# window under Xvfb, and a quilted sphere rendered with Cycles on the CPU. Needs a build with the
+# window under Xvfb, a quilted sphere and two spheres painted and raised from data/bricks.ppm,
+# rendered with Cycles on the CPU. Needs a build with the
 # Python module (scripts/build.sh --tests), Blender and xvfb-run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,4 +12,6 @@ xvfb-run -a -s "-screen 0 1280x1280x24" blender --factory-startup "$work/start.b
   --python blender/examples/panel_screenshot.py -- "$PWD/build/python" "$PWD" docs/images/blender_panel.png >/dev/null
 blender -b --factory-startup --python blender/examples/render_quilted_sphere.py -- \
   "$PWD/build/python" "$PWD" docs/images/blender_sphere.png >/dev/null
-echo "wrote docs/images/blender_panel.png and docs/images/blender_sphere.png"
+blender -b --factory-startup --python blender/examples/render_painted_spheres.py -- \
+  "$PWD/build/python" "$PWD" docs/images/blender_painted_spheres.png >/dev/null
+echo "wrote docs/images/blender_panel.png, blender_sphere.png and blender_painted_spheres.png"
