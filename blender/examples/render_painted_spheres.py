@@ -11,6 +11,9 @@ import numpy as np
 
 module_folder, source, out = sys.argv[sys.argv.index("--") + 1:][:3]
 sys.path.insert(0, os.path.join(source, "blender"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_still import render_still  # noqa: E402
+
 addon_utils.enable("meshquilt_blender", default_set=True)
 bpy.context.preferences.addons["meshquilt_blender"].preferences.module_path = module_folder
 
@@ -55,17 +58,4 @@ clay.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (0.
 spheres[1].data.materials.append(clay)
 spheres[0].data.polygons.foreach_set("use_smooth", [True] * len(spheres[0].data.polygons))
 
-scene = bpy.context.scene
-scene.render.engine = "CYCLES"
-scene.cycles.device = "CPU"
-scene.cycles.samples = 24
-scene.cycles.use_denoising = False  # Debian's Blender is built without OpenImageDenoise
-scene.render.resolution_x, scene.render.resolution_y = 800, 420
-camera = bpy.data.objects["Camera"]
-camera.location = (0.0, -6.4, 2.2)
-camera.rotation_euler = (1.25, 0.0, 0.0)
-bpy.data.objects["Light"].data.energy = 1000
-bpy.data.objects["Light"].location = (2.0, -4.0, 5.0)
-scene.world.color = (0.6, 0.62, 0.65)
-scene.render.filepath = out
-bpy.ops.render.render(write_still=True)
+render_still(out, (800, 420), (0.0, -6.4, 2.2), (1.25, 0.0, 0.0), 1000, (2.0, -4.0, 5.0))

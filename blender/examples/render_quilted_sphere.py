@@ -9,6 +9,9 @@ import bpy
 
 module_folder, source, out = sys.argv[sys.argv.index("--") + 1:][:3]
 sys.path.insert(0, os.path.join(source, "blender"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_still import render_still  # noqa: E402
+
 addon_utils.enable("meshquilt_blender", default_set=True)
 bpy.context.preferences.addons["meshquilt_blender"].preferences.module_path = module_folder
 
@@ -30,16 +33,4 @@ shader.inputs["Roughness"].default_value = 0.3
 quilt.data.materials.clear()
 quilt.data.materials.append(metal)
 
-scene = bpy.context.scene
-scene.render.engine = "CYCLES"
-scene.cycles.device = "CPU"
-scene.cycles.samples = 24
-scene.cycles.use_denoising = False  # Debian's Blender is built without OpenImageDenoise
-scene.render.resolution_x, scene.render.resolution_y = 640, 480
-camera = bpy.data.objects["Camera"]
-camera.location = (3.2, -3.2, 2.2)
-camera.rotation_euler = (1.1, 0.0, 0.785)
-bpy.data.objects["Light"].data.energy = 1500
-scene.world.color = (0.6, 0.62, 0.65)
-scene.render.filepath = out
-bpy.ops.render.render(write_still=True)
+render_still(out, (640, 480), (3.2, -3.2, 2.2), (1.1, 0.0, 0.785), 1500)
