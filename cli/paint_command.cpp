@@ -104,6 +104,9 @@ void add_paint_command(CLI::App& app) {
   cmd->add_option("--window", args->options.window, "neighbourhood width in pixels, odd, 3..21")->capture_default_str();
   cmd->add_option("--passes", args->options.passes, "the sweep, then passes over whole neighbourhoods")
       ->capture_default_str();
+  cmd->add_option("--coherence", args->options.coherence,
+                  "weight against a sample position few neighbours propose, 0..100")
+      ->capture_default_str();
   cmd->add_option("--seed", args->options.seed, "seed of every random choice")->capture_default_str();
   cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
   cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();

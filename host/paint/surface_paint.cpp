@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "mesh/measures.h"
+#include "paint/rigid_sources.h"
 #include "paint/sweep_batches.h"
 #include "paint/sweep_order.h"
 #include "neighbourhood_cost.h"
@@ -34,6 +35,8 @@ void check(const TriMesh& base, const ColourImage& sample, const PaintOptions& o
   if (o.random_candidates < 0 || o.random_candidates > 64)
     throw InputError("{random_candidates}: expected 0..64", ErrorKind::invalid_option);
   if (o.passes < 1 || o.passes > 8) throw InputError("{passes}: expected 1..8", ErrorKind::invalid_option);
+  if (!(o.coherence >= 0.0 && o.coherence <= 100.0))
+    throw InputError("{coherence}: expected a number in 0..100", ErrorKind::invalid_option);
   if (o.max_batch < 1) throw InputError("{max_batch}: expected at least 1", ErrorKind::invalid_option);
 }
 
@@ -131,6 +134,10 @@ double uniform(uint64_t seed, uint64_t vertex, uint64_t pass, uint64_t k) {
   return static_cast<double>(z >> 11) * 0x1p-53;
 }
 
+// Neighbours' sample positions that disagree by more than this many pixels of a level's sample
+// are a seam between patches; below it, the sub-pixel slack of the choices at coarser levels.
+constexpr double kRigidCut = 0.5;
+
 class Painter {
  public:
   Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const std::vector<int32_t>& order,
@@ -175,6 +182,13 @@ class Painter {
       if (options_.progress) options_.progress(visits_before_ + visits_made_, total_visits_);
     }
     return cost;
+  }
+
+  // Each coherent patch of sample positions made rigid (rigid_sources.h), then coloured anew.
+  void make_rigid() {
+    source_ = rigid_sources(surface_, directions_, pixels_per_unit_, {sample_.width, sample_.height}, source_,
+                            kRigidCut);
+    for (size_t v = 0; v < source_.size(); ++v) colour_[v] = sample_.sample(source_[v]);
   }
 
   // Every vertex starts from a sample position (a coarser level's, carried over): coloured there.
@@ -268,28 +282,53 @@ class Painter {
 
   // The candidate of least mismatch in double among those the kernel's float costs leave in
   // reach of its best (a margin well above float rounding): what a search in double would choose.
+  // Each mismatch is weighed by the candidate's support (coherence_factors), computed on the host
+  // alike for both back ends.
   double choose(Visit& visit, const std::vector<float>& costs) {
     double weights = 0.0;
     for (size_t k = visit.neighbours; k < visit.neighbours_end; ++k) weights += neighbours_[k].weight;
-    float least = std::numeric_limits<float>::infinity();
-    for (size_t k = visit.candidates; k < visit.candidates_end; ++k) least = std::min(least, costs[k]);
-    const double reach = static_cast<double>(least) + 1e-4 * (static_cast<double>(least) + weights);
-    double best = std::numeric_limits<double>::infinity();
+    coherence_factors(visit, weights);
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t k = visit.candidates; k < visit.candidates_end; ++k)
+      least = std::min(least, factors_[k - visit.candidates] * static_cast<double>(costs[k]));
+    const double reach = least + 1e-4 * (1.0 + options_.coherence) * (least + weights);
+    double best = std::numeric_limits<double>::infinity(), mismatch = 0.0;
     visit.chosen = candidates_[visit.candidates];
     for (size_t k = visit.candidates; k < visit.candidates_end; ++k) {
-      if (costs[k] > reach) continue;
+      const double factor = factors_[k - visit.candidates];
+      if (factor * static_cast<double>(costs[k]) > reach) continue;
       double cost = 0.0;
       for (size_t i = visit.neighbours; i < visit.neighbours_end; ++i) {
         const Neighbour& u = neighbours_[i];
         const glm::dvec3 d = colour_[u.vertex] - sample_.sample(candidates_[k] + u.offset);
         cost += u.weight * glm::dot(d, d);
       }
-      if (cost < best) {
-        best = cost;
+      if (factor * cost < best) {
+        best = factor * cost;
+        mismatch = cost;
         visit.chosen = candidates_[k];
       }
     }
-    return weights > 0.0 ? best / weights : 0.0;
+    return weights > 0.0 ? mismatch / weights : 0.0;
+  }
+
+  // Each candidate's mismatch is multiplied by 1 + coherence x (the weight of the neighbours that
+  // do not propose it, to within half a pixel, over all): a position few neighbours agree on
+  // starts a new patch, and wins only where it fits that much better (Hertzmann et al. 2001's
+  // coherence term, weighed by agreement instead of all or nothing).
+  void coherence_factors(const Visit& visit, double weights) {
+    factors_.assign(visit.candidates_end - visit.candidates, 1.0);
+    if (options_.coherence <= 0.0 || weights <= 0.0) return;
+    const glm::dvec2 period(sample_.width, sample_.height);
+    for (size_t k = visit.candidates; k < visit.candidates_end; ++k) {
+      double support = 0.0;
+      for (size_t i = visit.neighbours; i < visit.neighbours_end; ++i) {
+        glm::dvec2 d = source_[neighbours_[i].vertex] - neighbours_[i].offset - candidates_[k];
+        d -= period * glm::round(d / period);
+        if (glm::dot(d, d) <= 0.25) support += neighbours_[i].weight;
+      }
+      factors_[k - visit.candidates] = 1.0 + options_.coherence * (1.0 - support / weights);
+    }
   }
 
   // The window neighbours of v, coloured ones only unless `whole`, in v's frame: x along the
@@ -323,6 +362,7 @@ class Painter {
   std::vector<Neighbour> neighbours_;
   std::vector<glm::dvec2> candidates_;
   std::unordered_set<uint64_t> seen_;
+  std::vector<double> factors_;
   double sigma2_ = 1.0;
   std::vector<std::vector<int32_t>> schedule_;
   size_t batches_ = 0, visits_made_ = 0, visits_before_ = 0, total_visits_ = 0;
@@ -377,8 +417,12 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     // The coarsest level is swept; a finer one starts from the coarser positions carried over
     // and is corrected with whole neighbourhoods.
     const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);
-    if (step < coarsest) painter.start_from(sources);
+    if (step < coarsest) {
+      painter.start_from(sources);
+      painter.make_rigid();
+    }
     for (int pass = 0; pass < passes; ++pass) cost = painter.pass(pass > 0 || step < coarsest, pass);
+    if (step == 0) painter.make_rigid();
     sources = painter.sources();
     result.batches += painter.batches();
     result.visits += painter.visits();

@@ -10,7 +10,9 @@
 //! chosen in double on the host, so both back ends choose alike. Turk's sweep is sequential; it
 //! runs here in batches of vertices out of each other's windows, which give the same colours
 //! (sweep_batches.h). It runs coarse to fine: the sample halved while it holds more than a window, the sweep on the matching
-//! coarse split level, each finer level started from the positions carried over and corrected.
+//! coarse split level, each finer level started from the positions carried over, their patches
+//! made rigid (rigid_sources.h), and corrected; the finest level's patches are made rigid last.
+//! Candidates that few neighbours propose are weighed down (coherence), so patches grow large.
 
 #include <cstdint>
 #include <functional>
@@ -30,6 +32,7 @@ struct PaintOptions {
   int window = 7;                 //!< neighbourhood width in pixels, odd, 3..21
   int random_candidates = 4;      //!< sample positions tried at random per vertex, besides the coherent ones
   int passes = 2;                 //!< the sweep, then passes over whole neighbourhoods (1..8)
+  double coherence = 2.0;         //!< a candidate no neighbour proposes costs 1 + this times its mismatch (0..100)
   uint64_t seed = 1;              //!< of every random choice
   size_t max_vertices = 4000000;  //!< refuse a refinement past this many vertices
   size_t max_batch = 4096;        //!< vertices scored in one dispatch; 1: the sweep one vertex at a time
