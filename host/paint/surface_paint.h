@@ -11,7 +11,8 @@
 //! runs here in batches of vertices out of each other's windows, which give the same colours
 //! (sweep_batches.h). It runs coarse to fine: the sample halved while it holds more than a window, the sweep on the matching
 //! coarse split level, each finer level started from the positions carried over, their patches
-//! made rigid (rigid_sources.h), and corrected.
+//! made rigid (rigid_sources.h), and corrected; every level but the finest is then made rigid
+//! and corrected once more.
 //! Candidates that few neighbours propose are weighed down (coherence), so patches grow large.
 
 #include <cstdint>
