@@ -4,12 +4,13 @@
 # from samples made by paint_samples.py (numpy): paint_neighbourhoods.py, written apart from the
 # painter, reads 7 x 7 neighbourhoods back in the field's frame and compares them with the
 # sample's. Each must be at most 1.5x the sample's own leave-one-out distance and half a planar
-# projection's, and the stripes must run within 10 degrees of the field.
+# projection's, and the stripes must run within 10 degrees of the field. Over the bunny, along
+# its drawn field (which turns under every window), the height map holds both bars too.
 # usage: paint_neighbourhoods_test.sh MESHQUILT SHARED_MESHES WORK_DIR
 set -euo pipefail
 meshquilt=$1 meshes=$2 work=$3
 here=$(dirname "$0")
-[ -f "$meshes/plane.off" ] && [ -f "$meshes/cylinder.off" ] || { echo "skipped: $meshes not found"; exit 77; }
+[ -f "$meshes/plane.off" ] && [ -f "$meshes/cylinder.off" ] && [ -f "$meshes/bunny.off" ] || { echo "skipped: $meshes not found"; exit 77; }
 source "$(dirname "$0")/numpy_python.sh"
 mkdir -p "$work"
 "$python" "$here/paint_samples.py" "$work" 5
@@ -27,3 +28,8 @@ for base in plane cylinder; do
       "${stripes[@]}"
   done
 done
+out=$work/bunny-heights
+"$meshquilt" paint --base "$meshes/bunny.off" --image "$work/heights.pgm" --field "$here/../../data/bunny_field.json" \
+  --stats "$out.json" --write-field "$out.field" -o "$out.ply"
+"$python" "$here/paint_neighbourhoods.py" --painted "$out.ply" --field "$out.field" --sample "$work/heights.pgm" \
+  --stats "$out.json" --max-loo-ratio 1.5 --max-projection-ratio 0.5
