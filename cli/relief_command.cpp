@@ -53,8 +53,7 @@ nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, boo
   in.sample = detail.image;
   // As --image: the sample's width --scale x the base's diagonal; heights scale with widths.
   if (!ppu_given) in.pixels_per_unit = args.pixels / (args.scale * in.diagonal);
-  const double size = detail.pixels_per_unit / in.pixels_per_unit;  // base units per model unit
-  if (!height_given) args.options.height = (detail.high - detail.low) * size;
+  if (!height_given) args.options.height = detail.height_over(in.pixels_per_unit);
   return {{"model", args.model},
           {"smoothing", sample.smoothing},
           {"region", {sample.centre.x, sample.centre.y, sample.centre.z, sample.radius}},

@@ -484,7 +484,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       "paint",
       [](const Array3d& base_vertices, const Array3i& base_faces,
          const py::array_t<double, py::array::c_style | py::array::forcecast>& image, double scale,
-         double pixels_per_unit, int window, int passes, uint64_t seed, const std::string& backend,
+         double pixels_per_unit, int window, int passes, double coherence, uint64_t seed, const std::string& backend,
          std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
         const auto start = std::chrono::steady_clock::now();
         const ColourImage sample = sample_image(image, "paint", false);
@@ -495,6 +495,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         options.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
         options.window = window;
         options.passes = passes;
+        options.coherence = coherence;
         options.seed = seed;
         const std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
         PaintResult painted;
@@ -518,8 +519,9 @@ PYBIND11_MODULE(_meshquilt, m) {
         return out;
       },
       py::arg("base_vertices"), py::arg("base_faces"), py::arg("image"), py::arg("scale") = 0.25,
-      py::arg("pixels_per_unit") = 0.0, py::arg("window") = 7, py::arg("passes") = 2, py::arg("seed") = 1,
-      py::arg("backend") = "auto", py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
+      py::arg("pixels_per_unit") = 0.0, py::arg("window") = 7, py::arg("passes") = 2, py::arg("coherence") = 2.0,
+      py::arg("seed") = 1, py::arg("backend") = "auto", py::arg("field_points") = py::none(),
+      py::arg("field_directions") = py::none());
 
   m.def(
       "relief",
@@ -527,7 +529,7 @@ PYBIND11_MODULE(_meshquilt, m) {
          const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& image, double height,
          std::optional<Array3d> model_vertices, std::optional<Array3i> model_faces,
          std::optional<std::vector<double>> region, double smoothing, int pixels, double scale, double pixels_per_unit,
-         int window, int passes, uint64_t seed, const std::string& backend, double clearance,
+         int window, int passes, double coherence, uint64_t seed, const std::string& backend, double clearance,
          std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
         const auto start = std::chrono::steady_clock::now();
         if (image.has_value() == model_vertices.has_value())
@@ -556,8 +558,7 @@ PYBIND11_MODULE(_meshquilt, m) {
           options.paint.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
           // Heights scale as widths do, unless a height is given.
           if (!(height > 0.0))
-            options.height = (detail.detail.high - detail.detail.low) * detail.detail.pixels_per_unit /
-                             options.paint.pixels_per_unit;
+            options.height = detail.detail.height_over(options.paint.pixels_per_unit);
           from = {{"smoothing", detail.smoothing},
                   {"region", {detail.centre.x, detail.centre.y, detail.centre.z, detail.radius}},
                   {"detail_low", detail.detail.low},
@@ -565,6 +566,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         }
         options.paint.window = window;
         options.paint.passes = passes;
+        options.paint.coherence = coherence;
         options.paint.seed = seed;
         const std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
         ReliefResult relief;
@@ -595,7 +597,8 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("base_vertices"), py::arg("base_faces"), py::arg("image") = py::none(), py::arg("height") = 0.0,
       py::arg("model_vertices") = py::none(), py::arg("model_faces") = py::none(), py::arg("region") = py::none(),
       py::arg("smoothing") = 0.0, py::arg("pixels") = 32, py::arg("scale") = 0.25, py::arg("pixels_per_unit") = 0.0,
-      py::arg("window") = 7, py::arg("passes") = 2, py::arg("seed") = 1, py::arg("backend") = "auto",
+      py::arg("window") = 7, py::arg("passes") = 2, py::arg("coherence") = 2.0, py::arg("seed") = 1,
+      py::arg("backend") = "auto",
       py::arg("clearance") = 0.4, py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
 
   m.def(

@@ -25,6 +25,12 @@ struct DetailImage {
   ColourImage image;            //!< grey: 0 the region's lowest height, 1 its highest
   double low = 0.0, high = 0.0; //!< the heights black and white stand for
   double pixels_per_unit = 0.0; //!< image pixels per model unit
+
+  //! The height white stands for over a base that takes `base_pixels_per_unit` image pixels per
+  //! unit: the detail's own range, scaled as its width is.
+  double height_over(double base_pixels_per_unit) const {
+    return (high - low) * pixels_per_unit / base_pixels_per_unit;
+  }
 };
 
 //! The heights over a geodesic ball of `radius` round the model's vertex nearest `centre`,

@@ -128,13 +128,14 @@ def test_paint_equals_the_command_line():
     base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
     rng = np.random.default_rng(4)
     pixels = rng.integers(0, 256, size=(10, 12, 3), dtype=np.uint8)
-    result = meshquilt.paint(base, pixels / 255.0, scale=0.5, seed=3, backend="cpu")
+    result = meshquilt.paint(base, pixels / 255.0, scale=0.5, coherence=0.5, seed=3, backend="cpu")
     with tempfile.TemporaryDirectory() as folder:
         image_path, out_path = os.path.join(folder, "sample.ppm"), os.path.join(folder, "out.ply")
         with open(image_path, "wb") as out:
             out.write(b"P6\n12 10\n255\n" + pixels.tobytes())
         done = subprocess.run([CLI, "paint", "--base", os.path.join(SOURCE, "data", "sphere.off"), "--image", image_path,
-                               "--scale", "0.5", "--seed", "3", "--backend", "cpu", "--progress", "none", "-o", out_path],
+                               "--scale", "0.5", "--coherence", "0.5", "--seed", "3", "--backend", "cpu", "--progress",
+                               "none", "-o", out_path],
                               capture_output=True, text=True)
         assert done.returncode == 0, done.stderr
         ply = read_ply(out_path)
