@@ -18,6 +18,7 @@
 #include "paint/surface_paint.h"
 #include "progress.h"
 #include "render/png_encoding.h"
+#include "signals.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -46,6 +47,7 @@ void run_paint(PaintArgs& args) {
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
   ProgressReporter progress(progress_mode, "paint");
   args.options.progress = paint_progress(progress);
+  args.options.cancel = &interrupt_token();
   const PaintResult painted = paint_surface(in.base, in.sample, in.constraints, args.options, *device);
   nlohmann::json baked;
   if (args.atlas != 0) {
@@ -56,7 +58,7 @@ void run_paint(PaintArgs& args) {
              {"texels_per_unit", atlas.texels_per_unit},
              {"faces", in.base.num_faces()}};
   } else {
-    write_mesh(painted.mesh, args.output);
+    write_mesh(painted.mesh, args.output, WriteOptions{.cancel = &interrupt_token()});
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = {{"base", args.base},

@@ -24,6 +24,7 @@
 #include "paint/detail_extraction.h"
 #include "paint/surface_relief.h"
 #include "progress.h"
+#include "signals.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -92,8 +93,9 @@ void run_relief(ReliefArgs& args, bool height_given) {
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
   ProgressReporter progress(progress_mode, "relief");
   args.options.paint.progress = paint_progress(progress);
+  args.options.paint.cancel = &interrupt_token();
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options, *device);
-  write_mesh(relief.mesh, args.output);
+  write_mesh(relief.mesh, args.output, WriteOptions{.cancel = &interrupt_token()});
   if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   double highest = 0.0;

@@ -261,6 +261,40 @@ struct Job {
   std::exception_ptr callback_error;
 };
 
+// Paint's progress (visits made of all) as synth's callback takes it: the share done and the
+// seconds left. `callback` outlives the job, and is only called with the GIL held.
+std::function<void(size_t, size_t)> paint_progress(const std::optional<py::function>& callback, Job& job) {
+  if (!callback) return {};
+  const py::function* call = &*callback;
+  const auto begun = std::chrono::steady_clock::now();
+  return [&job, call, begun](size_t done, size_t total) {
+    const double share = total > 0 ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 0.0;
+    const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+    const double left = share > 0.0 ? spent * (1.0 - share) / share : -1.0;
+    py::gil_scoped_acquire gil;
+    try {
+      (*call)(share, left);
+    } catch (...) {
+      job.callback_error = std::current_exception();
+      job.token->cancel();
+    }
+  };
+}
+
+// Runs `work` without the GIL; a callback's error, which cancelled it, is raised in its stead.
+template <typename Work>
+void run_cancellable(Job& job, Work&& work) {
+  {
+    py::gil_scoped_release release;
+    try {
+      work();
+    } catch (const Cancelled&) {
+      if (!job.callback_error) throw;
+    }
+  }
+  if (job.callback_error) std::rethrow_exception(job.callback_error);
+}
+
 }  // namespace
 
 // An (H, W, 3) or, where `grey` allows, (H, W) array of values in [0, 1] as a sample image.
@@ -485,7 +519,8 @@ PYBIND11_MODULE(_meshquilt, m) {
       [](const Array3d& base_vertices, const Array3i& base_faces,
          const py::array_t<double, py::array::c_style | py::array::forcecast>& image, double scale,
          double pixels_per_unit, int window, int passes, double coherence, uint64_t seed, const std::string& backend,
-         std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
+         std::optional<py::function> progress, CancelToken* cancel, std::optional<Array3d> field_points,
+         std::optional<Array3d> field_directions) {
         const auto start = std::chrono::steady_clock::now();
         const ColourImage sample = sample_image(image, "paint", false);
         const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
@@ -497,12 +532,13 @@ PYBIND11_MODULE(_meshquilt, m) {
         options.passes = passes;
         options.coherence = coherence;
         options.seed = seed;
+        Job job;
+        if (cancel) job.token = cancel;
+        options.progress = paint_progress(progress, job);
+        options.cancel = job.token;
         const std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
         PaintResult painted;
-        {
-          py::gil_scoped_release release;
-          painted = paint_surface(base, sample, constraints, options, *device);
-        }
+        run_cancellable(job, [&] { painted = paint_surface(base, sample, constraints, options, *device); });
         py::dict out = dict_of(painted.mesh);
         py::array_t<uint8_t> colors({static_cast<py::ssize_t>(painted.mesh.num_vertices()), py::ssize_t{3}});
         auto c = colors.mutable_unchecked<2>();
@@ -520,8 +556,8 @@ PYBIND11_MODULE(_meshquilt, m) {
       },
       py::arg("base_vertices"), py::arg("base_faces"), py::arg("image"), py::arg("scale") = 0.25,
       py::arg("pixels_per_unit") = 0.0, py::arg("window") = 7, py::arg("passes") = 2, py::arg("coherence") = 2.0,
-      py::arg("seed") = 1, py::arg("backend") = "auto", py::arg("field_points") = py::none(),
-      py::arg("field_directions") = py::none());
+      py::arg("seed") = 1, py::arg("backend") = "auto", py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
+      py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
 
   m.def(
       "relief",
@@ -530,6 +566,7 @@ PYBIND11_MODULE(_meshquilt, m) {
          std::optional<Array3d> model_vertices, std::optional<Array3i> model_faces,
          std::optional<std::vector<double>> region, double smoothing, int pixels, double scale, double pixels_per_unit,
          int window, int passes, double coherence, uint64_t seed, const std::string& backend, double clearance,
+         std::optional<py::function> progress, CancelToken* cancel,
          std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
         const auto start = std::chrono::steady_clock::now();
         if (image.has_value() == model_vertices.has_value())
@@ -568,12 +605,13 @@ PYBIND11_MODULE(_meshquilt, m) {
         options.paint.passes = passes;
         options.paint.coherence = coherence;
         options.paint.seed = seed;
+        Job job;
+        if (cancel) job.token = cancel;
+        options.paint.progress = paint_progress(progress, job);
+        options.paint.cancel = job.token;
         const std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
         ReliefResult relief;
-        {
-          py::gil_scoped_release release;
-          relief = relief_surface(base, sample, constraints, options, *device);
-        }
+        run_cancellable(job, [&] { relief = relief_surface(base, sample, constraints, options, *device); });
         py::dict out = dict_of(relief.mesh);
         py::array_t<double> heights(static_cast<py::ssize_t>(relief.heights.size()));
         std::copy(relief.heights.begin(), relief.heights.end(), heights.mutable_data());
@@ -599,7 +637,8 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("smoothing") = 0.0, py::arg("pixels") = 32, py::arg("scale") = 0.25, py::arg("pixels_per_unit") = 0.0,
       py::arg("window") = 7, py::arg("passes") = 2, py::arg("coherence") = 2.0, py::arg("seed") = 1,
       py::arg("backend") = "auto",
-      py::arg("clearance") = 0.4, py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
+      py::arg("clearance") = 0.4, py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
+      py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
 
   m.def(
       "embed",

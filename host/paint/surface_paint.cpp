@@ -180,6 +180,7 @@ class Painter {
       ++batches_;
       visits_made_ += batch.size();
       if (options_.progress) options_.progress(visits_before_ + visits_made_, total_visits_);
+      if (options_.cancel) options_.cancel->check();
     }
     return cost;
   }

@@ -21,6 +21,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/error.h"
 #include "device.h"
 #include "mesh/tri_mesh.h"
 #include "paint/colour_image.h"
@@ -40,6 +41,8 @@ struct PaintOptions {
   //! Called after each batch with the visits made and all the job will make (every level and
   //! pass): the last call has done == total.
   std::function<void(size_t done, size_t total)> progress;
+  //! Polled after each batch: once cancelled, paint_surface throws Cancelled.
+  const CancelToken* cancel = nullptr;
 };
 
 struct PaintResult {
@@ -57,7 +60,8 @@ struct PaintResult {
 //! --field; none: its default). Constraint vertices are the base's own (split_faces keeps them).
 //! Deterministic for a seed, and the same on either back end of `device`.
 //! \throw InputError(invalid_option) for options out of range or a refinement past max_vertices;
-//!        InputError(invalid_mesh) for a base without faces; SolverError from the solves.
+//!        InputError(invalid_mesh) for a base without faces; SolverError from the solves;
+//!        Cancelled once options.cancel is.
 PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
                           const std::vector<FieldConstraint>& constraints, const PaintOptions& options,
                           engine::Device& device);

@@ -217,14 +217,17 @@ TEST(CrashSafeWrites, SigkillDuringSynth) {
   }
 }
 
-void expect_interrupt(int signal_number, const char* name) {
+// `job` (a command and its options): one of tens of seconds, so that the signal lands mid-run on
+// the fastest machine.
+void expect_interrupt(int signal_number, const char* name, std::vector<std::string> job) {
   const auto dir = scratch_dir(name);
   write_file(dir / "out.ply", "previous good output");
   write_file(dir / "stats.json", "previous stats");
-  // A job of tens of seconds, so that the signal lands mid-run on the fastest machine.
-  const pid_t pid = spawn_cli({"synth", "--progress", "none", "--plane", "10x10", "--backend", "cpu", "--stats",
-                               (dir / "stats.json").string(), "-o", (dir / "out.ply").string()},
-                              (dir / "log.txt").string());
+  for (const std::string& arg : {"--progress", "none", "--backend", "cpu", "--stats"}) job.push_back(arg);
+  job.push_back((dir / "stats.json").string());
+  job.push_back("-o");
+  job.push_back((dir / "out.ply").string());
+  const pid_t pid = spawn_cli(job, (dir / "log.txt").string());
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   kill(pid, signal_number);
   const auto sent = Clock::now();
@@ -239,8 +242,13 @@ void expect_interrupt(int signal_number, const char* name) {
   std::cout << name << ": stopped " << seconds << " s after the signal\n";
 }
 
-TEST(Interrupts, SigintLeavesTheOldOutput) { expect_interrupt(SIGINT, "sigint"); }
-TEST(Interrupts, SigtermLeavesTheOldOutput) { expect_interrupt(SIGTERM, "sigterm"); }
+TEST(Interrupts, SigintLeavesTheOldOutput) { expect_interrupt(SIGINT, "sigint", {"synth", "--plane", "10x10"}); }
+TEST(Interrupts, SigtermLeavesTheOldOutput) { expect_interrupt(SIGTERM, "sigterm", {"synth", "--plane", "10x10"}); }
+TEST(Interrupts, SigtermStopsPaint) {
+  const std::string data = std::string(MESHQUILT_SOURCE_DIR) + "/data/";
+  expect_interrupt(SIGTERM, "sigterm_paint",
+                   {"paint", "--base", data + "sphere.off", "--image", data + "bricks.ppm", "--scale", "0.1"});
+}
 
 }  // namespace
 }  // namespace meshquilt::test

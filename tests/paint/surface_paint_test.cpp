@@ -198,6 +198,19 @@ TEST_P(SurfacePaint, ReportsProgressUpToEveryVisit) {
   EXPECT_EQ(calls.back().second, painted.visits);
 }
 
+TEST_P(SurfacePaint, StopsAtTheBatchItIsCancelledIn) {
+  PaintOptions options;
+  options.pixels_per_unit = 10.0;
+  CancelToken token;
+  options.cancel = &token;
+  size_t calls = 0;
+  options.progress = [&](size_t, size_t) {
+    if (++calls == 3) token.cancel();
+  };
+  EXPECT_THROW(paint_surface(test::icosphere(2), stripes(), {}, options, device()), Cancelled);
+  EXPECT_EQ(calls, 3u);
+}
+
 TEST(SweepBatches, RunSideBySideOnlyWhatTheSweepWouldNotTellApart) {
   const TriMesh sphere = test::icosphere(3);
   const BaseSurface surface(sphere);

@@ -283,6 +283,34 @@ def test_progress_rises_to_the_whole_and_cancel_stops_the_job():
         meshquilt.synth(plane=(2, 2), backend="cpu", progress=fail)
 
 
+def test_paint_and_relief_report_progress_and_stop_when_cancelled():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    pixels = np.random.default_rng(6).random((16, 16, 3))
+    shares = []
+    meshquilt.paint(base, pixels, scale=0.5, backend="cpu", progress=lambda share, left: shares.append((share, left)))
+    assert len(shares) > 3
+    assert all(b[0] >= a[0] for a, b in zip(shares, shares[1:]))
+    assert shares[-1][0] == pytest.approx(1.0)
+    token = meshquilt.CancelToken()
+    seen = []
+
+    def stop_early(share, left):
+        seen.append(share)
+        if share > 0.2:
+            token.cancel()
+
+    with pytest.raises(meshquilt.Cancelled):
+        meshquilt.relief(base, pixels[:, :, 0], height=0.02, scale=0.5, backend="cpu", progress=stop_early,
+                         cancel=token)
+    assert seen[-1] < 1.0  # stopped before the end
+
+    def fail(share, left):
+        raise KeyError("from the callback")
+
+    with pytest.raises(KeyError):
+        meshquilt.paint(base, pixels, scale=0.5, backend="cpu", progress=fail)
+
+
 def test_the_engine_runs_without_the_gil():
     ticks = []
     done = threading.Event()
