@@ -194,31 +194,28 @@ def add_result_object(context, base, result, suffix="quilt"):
     return obj
 
 
-class MESHQUILT_OT_create(bpy.types.Operator):
-    """Quilt the active mesh with the swatch; Esc cancels and leaves the scene as it was"""
-    bl_idname = "meshquilt.create"
-    bl_label = "Create"
+class JobOperator:
+    """Runs the job `_start` gives off the main thread, with its progress in the status bar; Esc
+    cancels it and leaves the scene as it was. Without a window (scripts, background) it runs to
+    the end. `_apply` adds what the job made."""
 
     _timer = None
     _job = None
-    _base = None
-
-    @classmethod
-    def poll(cls, context):
-        return context.active_object is not None and context.active_object.type == "MESH"
 
     def invoke(self, context, event):
-        self._base = context.active_object
-        self._job = make_job(context, self._base).start()
+        self._job = self._start(context)
+        if self._job is None:
+            return {"CANCELLED"}
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.2, window=context.window)
         wm.progress_begin(0, 100)
         wm.modal_handler_add(self)
         return {"RUNNING_MODAL"}
 
-    def execute(self, context):  # without a window (scripts, background): run to the end
-        self._base = context.active_object
-        self._job = make_job(context, self._base).start()
+    def execute(self, context):
+        self._job = self._start(context)
+        if self._job is None:
+            return {"CANCELLED"}
         self._job.wait()
         return self._finish(context)
 
@@ -247,10 +244,29 @@ class MESHQUILT_OT_create(bpy.types.Operator):
             self.report({"INFO"}, "meshquilt: cancelled; nothing changed")
             return {"CANCELLED"}
         if self._job.error:
-            self.report({"ERROR"}, self._job.error)
+            self.report({"ERROR"}, "meshquilt: %s" % self._job.error)
             return {"CANCELLED"}
-        obj = add_result_object(context, self._base, self._job.result)
-        self.report({"INFO"}, "meshquilt: %d faces in %s" % (len(self._job.result["faces"]), obj.name))
+        return self._apply(context, self._job.result)
+
+
+class MESHQUILT_OT_create(JobOperator, bpy.types.Operator):
+    """Quilt the active mesh with the swatch; Esc cancels and leaves the scene as it was"""
+    bl_idname = "meshquilt.create"
+    bl_label = "Create"
+
+    _base = None
+
+    @classmethod
+    def poll(cls, context):
+        return context.active_object is not None and context.active_object.type == "MESH"
+
+    def _start(self, context):
+        self._base = context.active_object
+        return make_job(context, self._base).start()
+
+    def _apply(self, context, result):
+        obj = add_result_object(context, self._base, result)
+        self.report({"INFO"}, "meshquilt: %d faces in %s" % (len(result["faces"]), obj.name))
         return {"FINISHED"}
 
 
@@ -292,38 +308,35 @@ def add_painted_object(context, base, result, name):
     return obj
 
 
-class MESHQUILT_OT_paint(bpy.types.Operator):
+class MESHQUILT_OT_paint(JobOperator, bpy.types.Operator):
     """Colour the active mesh from the image, swept along the guide's field (Turk 2001); with a
-    relief height, raise the image's luma over it instead (a new object either way)"""
+    relief height, raise the image's luma over it instead (a new object either way). Esc cancels"""
     bl_idname = "meshquilt.paint"
     bl_label = "Paint from image"
+
+    _base = None
+    _relief = False
 
     @classmethod
     def poll(cls, context):
         return context.active_object is not None and context.active_object.type == "MESH"
 
-    def execute(self, context):
+    def _start(self, context):
         s = settings_of(context)
         if s.paint_image is None or s.paint_image.size[0] == 0:
             self.report({"ERROR"}, "meshquilt: choose an image to paint from")
-            return {"CANCELLED"}
+            return None
         module = module_or_report(self, context, "painting")
         if module is None:
-            return {"CANCELLED"}
-        base = context.active_object
-        arrays = mesh_arrays(base)
-        field = guide_field(s.guide_object, base) if s.guide_object else None
-        image = image_array(s.paint_image)
-        try:
-            if s.relief_height > 0.0:
-                result = module.relief(arrays, image, height=s.relief_height, scale=s.paint_scale, seed=s.seed,
-                                       field=field)
-            else:
-                result = module.paint(arrays, image, scale=s.paint_scale, seed=s.seed, field=field)
-        except module.Error as e:
-            self.report({"ERROR"}, "meshquilt: %s" % e)
-            return {"CANCELLED"}
-        obj = add_painted_object(context, base, result, "relief" if s.relief_height > 0.0 else "painted")
+            return None
+        self._base = context.active_object
+        self._relief = s.relief_height > 0.0
+        field = guide_field(s.guide_object, self._base) if s.guide_object else None
+        return quilt_job.PaintJob(module, mesh_arrays(self._base), image_array(s.paint_image), s.paint_scale, s.seed,
+                                  field=field, relief_height=s.relief_height).start()
+
+    def _apply(self, context, result):
+        obj = add_painted_object(context, self._base, result, "relief" if self._relief else "painted")
         self.report({"INFO"}, "meshquilt: %d vertices in %s" % (len(result.vertices), obj.name))
         return {"FINISHED"}
 

@@ -1,6 +1,6 @@
-"""A quilting job off Blender's main thread: a worker thread, a cancel token and the progress the
-modal operator shows. Uses the Python module `meshquilt` where it can be imported, else runs the
-`meshquilt` executable and reads its PLY back."""
+"""Jobs off Blender's main thread: a worker thread, a cancel token and the progress the modal
+operator shows. Quilting uses the Python module `meshquilt` where it can be imported, else runs
+the `meshquilt` executable and reads its PLY back; painting needs the module."""
 import json
 import os
 import subprocess
@@ -52,22 +52,13 @@ def read_binary_ply(path):
     return out
 
 
-class QuiltJob:
-    """Runs one synthesis on a worker thread. `share` and `seconds_left` follow its progress;
-    `result` holds vertices, faces, element and source when `done` and no `error`; cancel() stops
-    it and leaves `cancelled` set."""
+class BackgroundJob:
+    """Runs `_work` on a worker thread. `share` and `seconds_left` follow its progress; `result`
+    holds what it returned when `done` and no `error`; cancel() stops it and leaves `cancelled`
+    set."""
 
-    def __init__(self, base, swatch=None, swatch_kind="chainmail", swatch_options=None, scale=0.15, seed=1,
-                 minimize_distortion=True, shell_height=0.0, module_path="", executable="meshquilt", field=None):
-        self.base = base  # (vertices, faces) as numpy arrays
-        self.field = field  # (points, directions) drawn over the base, or None for the default field
-        self.swatch = swatch  # (vertices, faces), or None for a built-in kind
-        self.swatch_kind = swatch_kind
-        self.swatch_options = dict(swatch_options or {})
-        self.scale, self.seed = scale, seed
-        self.minimize_distortion, self.shell_height = minimize_distortion, shell_height
-        self.module = import_module(module_path)
-        self.executable = executable
+    def __init__(self, module):
+        self.module = module
         self.share, self.seconds_left = 0.0, -1.0
         self.result, self.error, self.cancelled = None, None, False
         self.done = threading.Event()
@@ -95,10 +86,7 @@ class QuiltJob:
 
     def _run(self):
         try:
-            if self.module is not None:
-                self.result = self._run_module()
-            else:
-                self.result = self._run_executable()
+            self.result = self._work()
         except Exception as error:  # reported to the operator, which leaves the scene as it was
             if not self.cancelled:
                 self.error = str(error)
@@ -106,6 +94,28 @@ class QuiltJob:
             if self.cancelled:
                 self.result = None
             self.done.set()
+
+    def _work(self):
+        raise NotImplementedError
+
+
+class QuiltJob(BackgroundJob):
+    """One synthesis: `result` holds vertices, faces, element, source, origin and texture."""
+
+    def __init__(self, base, swatch=None, swatch_kind="chainmail", swatch_options=None, scale=0.15, seed=1,
+                 minimize_distortion=True, shell_height=0.0, module_path="", executable="meshquilt", field=None):
+        super().__init__(import_module(module_path))
+        self.base = base  # (vertices, faces) as numpy arrays
+        self.field = field  # (points, directions) drawn over the base, or None for the default field
+        self.swatch = swatch  # (vertices, faces), or None for a built-in kind
+        self.swatch_kind = swatch_kind
+        self.swatch_options = dict(swatch_options or {})
+        self.scale, self.seed = scale, seed
+        self.minimize_distortion, self.shell_height = minimize_distortion, shell_height
+        self.executable = executable
+
+    def _work(self):
+        return self._run_module() if self.module is not None else self._run_executable()
 
     def _run_module(self):
         m = self.module
@@ -170,3 +180,19 @@ class QuiltJob:
                 f.write("%.17g %.17g %.17g\n" % tuple(p))
             for t in faces:
                 f.write("3 %d %d %d\n" % tuple(t))
+
+
+class PaintJob(BackgroundJob):
+    """The module's paint (or, with a relief height, its relief) of `base` from `image`:
+    `result` is its Result."""
+
+    def __init__(self, module, base, image, scale, seed, field=None, relief_height=0.0):
+        super().__init__(module)
+        self.base, self.image, self.field = base, image, field
+        self.scale, self.seed, self.relief_height = scale, seed, relief_height
+
+    def _work(self):
+        common = dict(scale=self.scale, seed=self.seed, field=self.field, progress=self._progress, cancel=self._token)
+        if self.relief_height > 0.0:
+            return self.module.relief(self.base, self.image, height=self.relief_height, **common)
+        return self.module.paint(self.base, self.image, **common)

@@ -5,7 +5,7 @@ and the Create operator, and through the executable where the module is missing,
 and finds the scene unchanged, follows the base after it is stretched, selects elements at random, follows the cube's shape-key animation as shape keys, follows a guide
 curve drawn over the base and previews its field, plays the built-in vine's sway as shape keys,
 adds each sample scene and weaves the sample torus along its guide, paints the cube from an image
-and raises it as a relief, and parses the extension manifest."""
+and raises it as a relief (and cancels a paint job), and parses the extension manifest."""
 import os
 import sys
 import tomllib
@@ -257,6 +257,14 @@ expected = meshquilt.relief(meshquilt_blender.mesh_arrays(cube), read_back, heig
 heights = np.empty(len(raised.vertices))
 raised.attributes["meshquilt_height"].data.foreach_get("value", heights)
 check(np.allclose(heights, expected.heights, atol=1e-6) and heights.max() > 0.03, "the relief has the module's heights")
+# A paint job cancelled from its progress ends with no result; one left alone reports its share.
+job = meshquilt_blender.job.PaintJob(meshquilt, meshquilt_blender.mesh_arrays(cube), read_back, 0.5, 4)
+job._progress = lambda share, left, job=job: (job.cancel() if share > 0.3 else None)
+check(job.start().wait(600) and job.cancelled and job.result is None and job.error is None,
+      "a cancelled paint job ends with no result")
+job = meshquilt_blender.job.PaintJob(meshquilt, meshquilt_blender.mesh_arrays(cube), read_back, 0.5, 4)
+check(job.start().wait(600) and job.error is None and job.share == 1.0 and len(job.result.vertices) > 0,
+      "a paint job reports its progress to the end")
 settings.paint_image = None
 before = set(bpy.data.objects.keys())
 try:
