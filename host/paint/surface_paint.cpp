@@ -300,7 +300,8 @@ class Painter {
     // pass the least found and its margin, no candidate after can come within reach.
     order_.resize(count);
     for (size_t k = 0; k < count; ++k) order_[k] = first + k;
-    std::sort(order_.begin(), order_.end(), [&](size_t a, size_t b) { return costs[a] < costs[b] || (costs[a] == costs[b] && a < b); });
+    std::sort(order_.begin(), order_.end(),
+              [&](size_t a, size_t b) { return costs[a] < costs[b] || (costs[a] == costs[b] && a < b); });
     double least = std::numeric_limits<double>::infinity();
     for (size_t k : order_) {
       if (static_cast<double>(costs[k]) > least + margin(least)) break;
@@ -429,9 +430,8 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     Painter painter(surface, directions, result.order, pyramid[step], device, pixels_per_unit, options, options.seed + step);
     painter.count_from(result.visits, total);
     // The coarsest level is swept; a finer one starts from the coarser positions carried over,
-    // their patches made rigid, and is corrected with whole neighbourhoods. (Made rigid after
-    // the last correction too, a smooth sample such as a height map reads 5% worse: its seams
-    // were blended by the correction.)
+    // their patches made rigid, and is corrected with whole neighbourhoods. Not made rigid after
+    // the finest correction: the seams it blended in a smooth sample would come back hard.
     const int passes = step == coarsest ? options.passes : std::max(1, options.passes - 1);
     if (step < coarsest) {
       painter.start_from(sources);
@@ -439,8 +439,7 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     }
     for (int pass = 0; pass < passes; ++pass) cost = painter.pass(pass > 0 || step < coarsest, pass);
     // A coarse level, a quarter of the next or less, is made rigid and corrected once more: it
-    // settles the low frequencies every finer level inherits (the height map over the bunny
-    // reads a quarter closer to its sample).
+    // settles the low frequencies every finer level inherits.
     if (step > 0) {
       painter.make_rigid();
       painter.pass(true, passes);
