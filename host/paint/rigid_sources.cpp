@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "numerics/sparse_solve.h"
+#include "paint/field_frame.h"
 
 namespace meshquilt {
 
@@ -13,11 +14,9 @@ std::vector<glm::dvec2> rigid_sources(const BaseSurface& surface, const std::vec
                                       double pixels_per_unit, const glm::dvec2& period,
                                       const std::vector<glm::dvec2>& sources, double cut, double hold) {
   const auto n = static_cast<Eigen::Index>(sources.size());
-  const auto offset = [&](int32_t v, const Vec3& q) {
-    const Vec3& d = directions[v];
-    const Vec3 b = glm::normalize(glm::cross(surface.vertex_normals[v], d));
-    return pixels_per_unit * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
-  };
+  std::vector<FieldFrame> frames;
+  frames.reserve(sources.size());
+  for (Eigen::Index v = 0; v < n; ++v) frames.push_back(field_frame(surface.vertex_normals[v], directions[v]));
   std::vector<Eigen::Triplet<double>> triplets;
   Eigen::MatrixXd rhs(n, 2);
   for (Eigen::Index v = 0; v < n; ++v) {
@@ -31,7 +30,8 @@ std::vector<glm::dvec2> rigid_sources(const BaseSurface& surface, const std::vec
       const int32_t a = t[k], b = t[(k + 1) % 3];
       const Vec3 q = surface.mesh.positions[b] - surface.mesh.positions[a];
       // The offset read in both ends' frames, which differ where the field turns.
-      const glm::dvec2 o = 0.5 * (offset(a, q) + offset(b, q));
+      const glm::dvec2 o =
+          0.5 * (frame_offset(frames[a], q, pixels_per_unit) + frame_offset(frames[b], q, pixels_per_unit));
       glm::dvec2 step = sources[b] - sources[a];
       step -= period * glm::round((step - o) / period);
       if (glm::length(step - o) > cut) continue;

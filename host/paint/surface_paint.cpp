@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "mesh/measures.h"
+#include "paint/field_frame.h"
 #include "paint/rigid_sources.h"
 #include "paint/sweep_batches.h"
 #include "paint/sweep_order.h"
@@ -347,13 +348,11 @@ class Painter {
   // field, y along normal x field.
   void gather(int32_t v, bool whole) {
     const Vec3& p = surface_.mesh.positions[v];
-    const Vec3& d = directions_[v];
-    const Vec3 b = glm::normalize(glm::cross(surface_.vertex_normals[v], d));
+    const FieldFrame frame = field_frame(surface_.vertex_normals[v], directions_[v]);
     for (int64_t k = windows_.first[v]; k < windows_.first[v + 1]; ++k) {
       const int32_t w = windows_.vertices[k];
       if (!whole && !done_[w]) continue;
-      const Vec3 q = surface_.mesh.positions[w] - p;
-      const glm::dvec2 offset = pixels_per_unit_ * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
+      const glm::dvec2 offset = frame_offset(frame, surface_.mesh.positions[w] - p, pixels_per_unit_);
       neighbours_.push_back({w, offset, std::exp(-glm::dot(offset, offset) / (2.0 * sigma2_))});
     }
   }
@@ -470,10 +469,9 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     for (size_t v = 0; v < mesh.num_vertices(); ++v) carried[v] = 2.0 * sources[v];
     for (size_t k = 0; k < parents.size(); ++k) {
       const int32_t a = parents[k].first;
-      const Vec3& d = directions[a];
-      const Vec3 b = glm::normalize(glm::cross(surface.vertex_normals[a], d));
       const Vec3 q = finer.positions[mesh.num_vertices() + k] - mesh.positions[a];
-      carried[mesh.num_vertices() + k] = 2.0 * sources[a] + next * glm::dvec2(glm::dot(q, d), glm::dot(q, b));
+      carried[mesh.num_vertices() + k] =
+          2.0 * sources[a] + frame_offset(field_frame(surface.vertex_normals[a], directions[a]), q, next);
     }
     sources = std::move(carried);
     directions = split_field(mesh, directions, finer, parents);
