@@ -72,6 +72,7 @@ void run_paint(PaintArgs& args) {
                                   {"mean_cost", painted.mean_cost},
                                   {"visits", painted.visits},
                                   {"batches", painted.batches},
+                                  {"neighbours", painted.neighbours},
                                   {"backend", engine::backend_name(device->backend())},
                                   {"device", device->name()},
                                   {"seconds", seconds}};

@@ -549,7 +549,8 @@ PYBIND11_MODULE(_meshquilt, m) {
             {"pixels_per_unit", options.pixels_per_unit}, {"levels", painted.levels},
             {"vertices", painted.mesh.num_vertices()},   {"faces", painted.mesh.num_faces()},
             {"mean_cost", painted.mean_cost},             {"visits", painted.visits},
-            {"batches", painted.batches},                 {"backend", engine::backend_name(device->backend())},
+            {"batches", painted.batches},                 {"neighbours", painted.neighbours},
+            {"backend", engine::backend_name(device->backend())},
             {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
         out["stats"] = json_to_python(stats);
         return out;

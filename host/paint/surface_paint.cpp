@@ -139,6 +139,9 @@ double uniform(uint64_t seed, uint64_t vertex, uint64_t pass, uint64_t k) {
 // are a seam between patches; below it, the sub-pixel slack of the choices at coarser levels.
 constexpr double kRigidCut = 0.5;
 
+// The cell, in pixels of a level's sample, a neighbourhood keeps one vertex of.
+constexpr double kCell = 0.5;
+
 class Painter {
  public:
   Painter(const BaseSurface& surface, const std::vector<Vec3>& directions, const std::vector<int32_t>& order,
@@ -158,6 +161,9 @@ class Painter {
     windows_ = window_neighbours(surface, 0.5 * options.window / pixels_per_unit);
     schedule_ = sweep_batches(order, windows_, options.max_batch);
     sigma2_ = std::pow(0.25 * options.window, 2.0);
+    // An odd number of cells, the middle one centred on the vertex, covering the window's reach.
+    cells_ = 2 * static_cast<int>(std::ceil(0.5 * options.window / kCell)) + 1;
+    cell_.assign(static_cast<size_t>(cells_) * cells_, -1);
   }
 
   // One pass over the sweep, in batches of vertices whose windows do not reach each other: each
@@ -211,6 +217,7 @@ class Painter {
   const std::vector<glm::dvec3>& colours() const { return colour_; }
   size_t batches() const { return batches_; }
   size_t visits() const { return visits_made_; }
+  size_t neighbours_read() const { return neighbours_read_; }
   const std::vector<glm::dvec2>& sources() const { return source_; }
 
  private:
@@ -238,6 +245,7 @@ class Painter {
     Visit visit{v, neighbours_.size(), 0, candidates_.size(), 0, {}};
     gather(v, whole);
     visit.neighbours_end = neighbours_.size();
+    neighbours_read_ += visit.neighbours_end - visit.neighbours;
     const auto first = static_cast<uint32_t>(work_.neighbours.size());
     for (size_t k = visit.neighbours; k < visit.neighbours_end; ++k) {
       const Neighbour& u = neighbours_[k];
@@ -349,12 +357,39 @@ class Painter {
   void gather(int32_t v, bool whole) {
     const Vec3& p = surface_.mesh.positions[v];
     const FieldFrame frame = field_frame(surface_.vertex_normals[v], directions_[v]);
+    const size_t first = neighbours_.size();
     for (int64_t k = windows_.first[v]; k < windows_.first[v + 1]; ++k) {
       const int32_t w = windows_.vertices[k];
       if (!whole && !done_[w]) continue;
       const glm::dvec2 offset = frame_offset(frame, surface_.mesh.positions[w] - p, pixels_per_unit_);
       neighbours_.push_back({w, offset, std::exp(-glm::dot(offset, offset) / (2.0 * sigma2_))});
     }
+    if (neighbours_.size() - first > cell_.size()) thin(first);
+  }
+
+  // A window holding more vertices than it has cells of kCell pixels (a base far denser than
+  // the sample, or a coarse level of one) keeps only the one nearest each cell's centre, so its
+  // cost stays that of a base a cell apart. Windows at the sample's density keep every vertex.
+  void thin(size_t first) {
+    std::fill(cell_.begin(), cell_.end(), -1);
+    distance_.clear();
+    size_t kept = first;
+    for (size_t k = first; k < neighbours_.size(); ++k) {
+      const glm::dvec2 at = neighbours_[k].offset / kCell + 0.5 * static_cast<double>(cells_);
+      const glm::ivec2 c = glm::clamp(glm::ivec2(glm::floor(at)), glm::ivec2(0), glm::ivec2(cells_ - 1));
+      const glm::dvec2 from_centre = at - glm::dvec2(c) - 0.5;
+      const double d = glm::dot(from_centre, from_centre);
+      int64_t& slot = cell_[static_cast<size_t>(c.y) * cells_ + c.x];
+      if (slot < 0) {
+        slot = static_cast<int64_t>(kept);
+        neighbours_[kept++] = neighbours_[k];
+        distance_.push_back(d);
+      } else if (d < distance_[static_cast<size_t>(slot) - first]) {
+        neighbours_[static_cast<size_t>(slot)] = neighbours_[k];
+        distance_[static_cast<size_t>(slot) - first] = d;
+      }
+    }
+    neighbours_.resize(kept);
   }
 
   const BaseSurface& surface_;
@@ -375,9 +410,12 @@ class Painter {
   std::unordered_set<uint64_t> seen_;
   std::vector<double> factors_;
   std::vector<size_t> order_;
+  std::vector<int64_t> cell_;
+  std::vector<double> distance_;
+  int cells_ = 0;
   double sigma2_ = 1.0;
   std::vector<std::vector<int32_t>> schedule_;
-  size_t batches_ = 0, visits_made_ = 0, visits_before_ = 0, total_visits_ = 0;
+  size_t batches_ = 0, visits_made_ = 0, visits_before_ = 0, total_visits_ = 0, neighbours_read_ = 0;
 };
 
 // Visits of the whole job: each level's passes over its vertices, a split adding one per edge.
@@ -446,6 +484,7 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
     sources = painter.sources();
     result.batches += painter.batches();
     result.visits += painter.visits();
+    result.neighbours += painter.neighbours_read();
     if (step == 0) {
       result.mesh = std::move(mesh);
       result.source = sources;

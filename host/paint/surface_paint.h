@@ -14,6 +14,7 @@
 //! made rigid (rigid_sources.h), and corrected; every level but the finest is then made rigid
 //! and corrected once more.
 //! Candidates that few neighbours propose are weighed down (coherence), so patches grow large.
+//! A window reads one vertex per half-pixel cell at most, however dense the base.
 
 #include <cstdint>
 #include <functional>
@@ -54,6 +55,7 @@ struct PaintResult {
   double mean_cost = 0.0;              //!< mean neighbourhood mismatch of the last pass, per neighbour
   size_t visits = 0;                   //!< vertices coloured, over every level and pass
   size_t batches = 0;                  //!< batches of them scored side by side
+  size_t neighbours = 0;               //!< window neighbours read, over every visit
 };
 
 //! Paints `base` from `sample`, oriented by the guidance field of `constraints` (synth's

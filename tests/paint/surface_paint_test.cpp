@@ -120,6 +120,29 @@ TEST_P(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
   EXPECT_GT(same_along_x(turned), 0.95);
 }
 
+TEST_P(SurfacePaint, ABaseDenserThanTheSampleReadsAVertexACellAndStillCopies) {
+  // Four grid steps a pixel, sixteen vertices a pixel square: a 7-pixel window round a vertex
+  // holds about 600 of them, and reading all would cost that much per candidate. It may read one
+  // per half-pixel cell, at most 15 x 15, and the stripes still come back as one translated copy.
+  const TriMesh plane = test::flat_grid(160, 40, 1.0 / 64.0, 0.0);
+  PaintOptions options;
+  options.pixels_per_unit = 16.0;
+  const ColourImage image = stripes();
+  const PaintResult painted = paint_surface(plane, image, along(plane, Vec3(1, 0, 0)), options, device());
+  ASSERT_EQ(painted.mesh.num_vertices(), plane.num_vertices());
+  ASSERT_GT(painted.visits, 0u);
+  EXPECT_LE(static_cast<double>(painted.neighbours) / static_cast<double>(painted.visits), 15.0 * 15.0);
+  EXPECT_GT(static_cast<double>(painted.neighbours) / static_cast<double>(painted.visits), 50.0);
+  const double phase = painted.source[0].x - painted.mesh.positions[0].x * options.pixels_per_unit;
+  size_t close = 0;
+  for (size_t v = 0; v < painted.mesh.num_vertices(); ++v) {
+    const auto& c = painted.mesh.colors[v];
+    const glm::dvec3 expected = image.sample({painted.mesh.positions[v].x * options.pixels_per_unit + phase, 0.5});
+    close += glm::length(glm::dvec3(c[0], c[1], c[2]) / 255.0 - expected) < 1.0 / 255.0;
+  }
+  EXPECT_GT(static_cast<double>(close) / static_cast<double>(painted.mesh.num_vertices()), 0.99);
+}
+
 TEST_P(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
   // One direction held on a coarse plane: synth's smoothest field holding it is that direction
   // everywhere. Spread over the refined mesh instead, it would turn back to the default within a
