@@ -1,4 +1,4 @@
-// `meshquilt render MESH -o OUT.png [--view V] [--mode M] [--size WxH]`: a preview image.
+// `meshquilt render MESH -o OUT.png [--view V] [--mode M] [--size WxH] [--up A]`: a preview image.
 #include "render_command.h"
 
 #include <algorithm>
@@ -22,6 +22,7 @@ struct RenderArgs {
   std::string view = "oblique";
   std::string mode = "shaded";
   std::string size = "1024x768";
+  std::string up = "z";
 };
 
 void check_png_extension(const std::filesystem::path& file) {
@@ -42,6 +43,7 @@ void run_render(const RenderArgs& args) {
   parse_image_size(args.size, &options);
   options.view = parse_view(args.view);
   options.mode = parse_render_mode(args.mode);
+  options.up = parse_up_axis(args.up);
   const std::filesystem::path output(args.output);
   check_png_extension(output);
   check_writable(output);
@@ -74,22 +76,6 @@ void parse_image_size(const std::string& text, RenderOptions* options) {
   options->height = height;
 }
 
-View parse_view(const std::string& text) {
-  if (text == "top") return View::top;
-  if (text == "oblique") return View::oblique;
-  if (text == "front") return View::front;
-  if (text == "side") return View::side;
-  throw InputError("--view: expected top, oblique, front or side, got '" + text + "'",
-                   ErrorKind::invalid_option);
-}
-
-RenderMode parse_render_mode(const std::string& text) {
-  if (text == "shaded") return RenderMode::shaded;
-  if (text == "elements") return RenderMode::elements;
-  if (text == "colors") return RenderMode::colors;
-  throw InputError("--mode: expected shaded, elements or colors, got '" + text + "'", ErrorKind::invalid_option);
-}
-
 void add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand(
@@ -104,6 +90,8 @@ void add_render_command(CLI::App& app) {
                   "shaded: grey-blue, lightly tinted per element; elements: one flat colour per element; colors: the vertex colours")
       ->capture_default_str();
   cmd->add_option("--size", args->size, "image size WxH in pixels, each side at most 8192")
+      ->capture_default_str();
+  cmd->add_option("--up", args->up, "x|y|z: the mesh's axis shown upward (y for y-up scans such as bunny.off)")
       ->capture_default_str();
   cmd->callback([args] { run_render(*args); });
 }

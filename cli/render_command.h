@@ -22,10 +22,4 @@ void write_preview(const TriMesh& mesh, const std::filesystem::path& png, const 
 //!        1..kMaxImageSide.
 void parse_image_size(const std::string& text, RenderOptions* options);
 
-//! Parses `--view top|oblique|front|side`. \throw InputError(invalid_option) naming --view.
-View parse_view(const std::string& text);
-
-//! Parses `--mode shaded|elements`. \throw InputError(invalid_option) naming --mode.
-RenderMode parse_render_mode(const std::string& text);
-
 }  // namespace meshquilt::cli

@@ -52,6 +52,7 @@ namespace {
 
 using Array3d = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Array3i = py::array_t<int32_t, py::array::c_style | py::array::forcecast>;
+using Colors = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>;
 
 // The CLI's wording: an option named {name} in a message reads --name.
 std::string message_of(const Error& e) {
@@ -120,7 +121,25 @@ py::dict dict_of(const TriMesh& m) {
   out["element"] = ints(m.elements.empty() ? face_components(m) : m.elements);
   if (!m.sources.empty()) out["source"] = ints(m.sources);
   if (!m.origins.empty()) out["origin"] = ints(m.origins);
+  if (!m.colors.empty() && m.colors.size() == m.positions.size()) {
+    py::array_t<uint8_t> colors({static_cast<py::ssize_t>(m.colors.size()), py::ssize_t{3}});
+    auto c = colors.mutable_unchecked<2>();
+    for (size_t v = 0; v < m.colors.size(); ++v)
+      for (int k = 0; k < 3; ++k) c(v, k) = m.colors[v][k];
+    out["colors"] = colors;
+  }
   return out;
+}
+
+// Per-vertex colours, (N, 3) uint8, onto a mesh of N vertices.
+void set_colors(TriMesh& mesh, const std::optional<Colors>& colors, const char* what) {
+  if (!colors) return;
+  if (colors->ndim() != 2 || colors->shape(1) != 3 || static_cast<size_t>(colors->shape(0)) != mesh.num_vertices())
+    throw InputError(std::string(what) + ": colors must be an (N, 3) uint8 array, a row per vertex",
+                     ErrorKind::invalid_option);
+  const auto c = colors->unchecked<2>();
+  mesh.colors.resize(mesh.num_vertices());
+  for (size_t v = 0; v < mesh.num_vertices(); ++v) mesh.colors[v] = {c(v, 0), c(v, 1), c(v, 2)};
 }
 
 py::object json_to_python(const nlohmann::json& j) {
@@ -540,11 +559,6 @@ PYBIND11_MODULE(_meshquilt, m) {
         PaintResult painted;
         run_cancellable(job, [&] { painted = paint_surface(base, sample, constraints, options, *device); });
         py::dict out = dict_of(painted.mesh);
-        py::array_t<uint8_t> colors({static_cast<py::ssize_t>(painted.mesh.num_vertices()), py::ssize_t{3}});
-        auto c = colors.mutable_unchecked<2>();
-        for (size_t v = 0; v < painted.mesh.num_vertices(); ++v)
-          for (int k = 0; k < 3; ++k) c(v, k) = painted.mesh.colors[v][k];
-        out["colors"] = colors;
         const nlohmann::json stats = {
             {"pixels_per_unit", options.pixels_per_unit}, {"levels", painted.levels},
             {"vertices", painted.mesh.num_vertices()},   {"faces", painted.mesh.num_faces()},
@@ -672,10 +686,11 @@ PYBIND11_MODULE(_meshquilt, m) {
   m.def(
       "write",
       [](const Array3d& vertices, const Array3i& faces, std::optional<py::array_t<int32_t>> element,
-         std::optional<py::array_t<int32_t>> source, const std::string& path) {
+         std::optional<py::array_t<int32_t>> source, const std::string& path, std::optional<Colors> colors) {
         TriMesh mesh = mesh_from(vertices, faces, "write");
         if (element) mesh.elements.assign(element->data(), element->data() + element->size());
         if (source) mesh.sources.assign(source->data(), source->data() + source->size());
+        set_colors(mesh, colors, "write");
         if ((!mesh.elements.empty() && mesh.elements.size() != mesh.num_faces()) ||
             (!mesh.sources.empty() && mesh.sources.size() != mesh.num_faces()))
           throw InputError("write: element and source need one entry per face", ErrorKind::invalid_option);
@@ -683,7 +698,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         write_mesh(mesh, path);
       },
       py::arg("vertices"), py::arg("faces"), py::arg("element") = py::none(), py::arg("source") = py::none(),
-      py::arg("path"));
+      py::arg("path"), py::arg("colors") = py::none());
 
   m.def(
       "inspect",
@@ -702,21 +717,23 @@ PYBIND11_MODULE(_meshquilt, m) {
   m.def(
       "render",
       [](const Array3d& vertices, const Array3i& faces, std::optional<py::array_t<int32_t>> element,
-         const std::string& path, int width, int height, const std::string& mode) {
+         const std::string& path, int width, int height, const std::string& mode, std::optional<Colors> colors,
+         const std::string& view, const std::string& up) {
         TriMesh mesh = mesh_from(vertices, faces, "render");
         if (element) mesh.elements.assign(element->data(), element->data() + element->size());
+        set_colors(mesh, colors, "render");
         RenderOptions options;
         options.width = width;
         options.height = height;
-        if (mode != "shaded" && mode != "elements")
-          throw InputError("--mode: expected shaded or elements, got '" + mode + "'",
-                           ErrorKind::invalid_option);
-        options.mode = mode == "elements" ? RenderMode::elements : RenderMode::shaded;
+        options.mode = parse_render_mode(mode);
+        options.view = parse_view(view);
+        options.up = parse_up_axis(up);
         py::gil_scoped_release release;
         write_file_atomic(path, encode_png(render_mesh(mesh, options)));
       },
       py::arg("vertices"), py::arg("faces"), py::arg("element") = py::none(), py::arg("path"),
-      py::arg("width") = 1024, py::arg("height") = 768, py::arg("mode") = "shaded");
+      py::arg("width") = 1024, py::arg("height") = 768, py::arg("mode") = "shaded", py::arg("colors") = py::none(),
+      py::arg("view") = "oblique", py::arg("up") = "z");
 
   m.def(
       "edit",

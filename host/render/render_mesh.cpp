@@ -93,14 +93,46 @@ void validate_render_options(const RenderOptions& options) {
   if (options.samples < 1 || options.samples > 4)
     throw InputError("render samples: expected 1 to 4 per side, got " + std::to_string(options.samples),
                      ErrorKind::invalid_option);
+  if (options.up < 0 || options.up > 2)
+    throw InputError("--up: expected x, y or z", ErrorKind::invalid_option);
   if (!(options.margin >= 0.0 && options.margin <= 0.45))
     throw InputError("render margin: expected 0 to 0.45, got " + std::to_string(options.margin),
                      ErrorKind::invalid_option);
 }
 
+View parse_view(const std::string& text) {
+  if (text == "top") return View::top;
+  if (text == "oblique") return View::oblique;
+  if (text == "front") return View::front;
+  if (text == "side") return View::side;
+  throw InputError("--view: expected top, oblique, front or side, got '" + text + "'",
+                   ErrorKind::invalid_option);
+}
+
+RenderMode parse_render_mode(const std::string& text) {
+  if (text == "shaded") return RenderMode::shaded;
+  if (text == "elements") return RenderMode::elements;
+  if (text == "colors") return RenderMode::colors;
+  throw InputError("--mode: expected shaded, elements or colors, got '" + text + "'", ErrorKind::invalid_option);
+}
+
+int parse_up_axis(const std::string& text) {
+  if (text == "x" || text == "y" || text == "z") return text[0] - 'x';
+  throw InputError("--up: expected x, y or z, got '" + text + "'", ErrorKind::invalid_option);
+}
+
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
   validate_render_options(options);
   if (mesh.num_faces() == 0) throw InputError("render: the mesh has no faces");
+  if (options.up != 2) {
+    // A cyclic turn of the axes carries the up axis to z and keeps the mesh right-handed: for
+    // y up, the model's front (+z) comes to face the front view's camera (-y).
+    TriMesh turned = mesh;
+    for (Vec3& p : turned.positions) p = options.up == 1 ? Vec3(p.x, -p.z, p.y) : Vec3(p.y, p.z, p.x);
+    RenderOptions upright = options;
+    upright.up = 2;
+    return render_mesh(turned, upright);
+  }
   if (options.mode == RenderMode::colors && mesh.colors.size() != mesh.positions.size())
     throw InputError("--mode colors: the mesh has no vertex colours (see meshquilt edit --color-by)",
                      ErrorKind::invalid_option);

@@ -3,6 +3,8 @@
 //! hit shaded with Lambert's law under a key light and a headlight plus ambient light, on a
 //! light background. No GPU and no display are needed.
 
+#include <string>
+
 #include "mesh/tri_mesh.h"
 #include "render/camera_framing.h"
 #include "render/rgb_image.h"
@@ -31,7 +33,17 @@ struct RenderOptions {
   //! Faces of this element id are drawn in a plain light grey in every mode (a base mesh shown
   //! under its texture); -1: none.
   int32_t plain_element = -1;
+  int up = 2;  //!< the mesh's axis (0 x, 1 y, 2 z) shown upward, as z is: 1 for y-up scans
 };
+
+//! Parses `--view top|oblique|front|side`. \throw InputError(invalid_option) naming --view.
+View parse_view(const std::string& text);
+
+//! Parses `--mode shaded|elements|colors`. \throw InputError(invalid_option) naming --mode.
+RenderMode parse_render_mode(const std::string& text);
+
+//! Parses `--up x|y|z` into RenderOptions::up. \throw InputError(invalid_option) naming --up.
+int parse_up_axis(const std::string& text);
 
 //! \throw InputError(invalid_option) naming `--size WxH` when a side is outside
 //!        1..kMaxImageSide, or naming the option when samples is outside 1..4 or margin outside

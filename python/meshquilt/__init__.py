@@ -73,9 +73,14 @@ def _field_arrays(field: Optional[Field]) -> Tuple[Optional[np.ndarray], Optiona
             np.ascontiguousarray(directions, dtype=np.float64).reshape(-1, 3))
 
 
+def _colors(mesh: MeshLike) -> Optional[np.ndarray]:
+    colors = getattr(mesh, "colors", None)
+    return None if colors is None else np.ascontiguousarray(colors, np.uint8)
+
+
 def _mesh(d: dict, cls=Mesh, **extra) -> Mesh:
     return cls(vertices=d["vertices"], faces=d["faces"], element=d.get("element"), source=d.get("source"),
-               origin=d.get("origin"), **extra)
+               origin=d.get("origin"), colors=d.get("colors"), **extra)
 
 
 def swatch(kind: str, preset: str = "default", seed: int = 1, **options: Any) -> Mesh:
@@ -139,7 +144,7 @@ def paint(base: MeshLike, image: Any, *, scale: float = 0.25, pixels_per_unit: f
     fp, fd = _field_arrays(field)
     d = _meshquilt.paint(bv, bf, np.ascontiguousarray(image, dtype=np.float64), scale, pixels_per_unit, window, passes,
                          coherence, seed, backend, progress, cancel, fp, fd)
-    return _mesh(d, Result, stats=d["stats"], colors=d["colors"])
+    return _mesh(d, Result, stats=d["stats"])
 
 
 def relief(base: MeshLike, heights: Any = None, *, height: float = 0.0, model: Optional[MeshLike] = None,
@@ -197,12 +202,15 @@ def inspect(mesh: MeshLike) -> Dict[str, Any]:
     return _meshquilt.inspect(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32))
 
 
-def render(mesh: MeshLike, path: str, width: int = 1024, height: int = 768, mode: str = "shaded") -> None:
-    """Writes a PNG preview as `meshquilt render` does (oblique view; mode "shaded" or "elements")."""
+def render(mesh: MeshLike, path: str, width: int = 1024, height: int = 768, mode: str = "shaded",
+           view: str = "oblique", up: str = "z") -> None:
+    """Writes a PNG preview as `meshquilt render` does: mode "shaded", "elements" or "colors" (the
+    mesh's per-vertex `colors`, as paint returns them), view "oblique", "top", "front" or "side",
+    `up` the mesh's axis shown upward ("y" for y-up scans)."""
     vertices, faces = _arrays(mesh, "render")
     element = getattr(mesh, "element", None)
     _meshquilt.render(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32), path,
-                      width, height, mode)
+                      width, height, mode, _colors(mesh), view, up)
 
 
 def edit(mesh: Mesh, *, remove_elements: Sequence[int] = (), remove_sources: Sequence[int] = (),
@@ -220,18 +228,20 @@ def edit(mesh: Mesh, *, remove_elements: Sequence[int] = (), remove_sources: Seq
 
 def read(path: str) -> Mesh:
     """Reads a mesh as `meshquilt` does (.obj .ply .off .stl): per-face element ids from the PLY
-    `element` property or OBJ groups, else the connected components; sources where the file has them."""
+    `element` property or OBJ groups, else the connected components; sources and per-vertex
+    colours where the file has them."""
     return _mesh(_meshquilt.read(path))
 
 
 def write(mesh: MeshLike, path: str) -> None:
     """Writes a mesh as `meshquilt synth` does, atomically (.ply .obj .off .stl, or .glb for
-    Blender and game engines), with its element ids and sources."""
+    Blender and game engines), with its element ids and sources, and its per-vertex `colors`
+    where it has them (as `meshquilt paint` writes them)."""
     vertices, faces = _arrays(mesh, "write")
     element = getattr(mesh, "element", None)
     source = getattr(mesh, "source", None)
     _meshquilt.write(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32),
-                     None if source is None else np.ascontiguousarray(source, np.int32), path)
+                     None if source is None else np.ascontiguousarray(source, np.int32), path, _colors(mesh))
 
 
 def embed(texture: bytes, base: MeshLike, mode: str = "auto") -> Mesh:

@@ -151,6 +151,33 @@ def test_paint_equals_the_command_line():
         meshquilt.paint(base, pixels, scale=0.5)  # bytes, not colours in [0, 1]
 
 
+def test_painted_colours_are_written_read_back_and_rendered_as_the_command_line_does():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    pixels = np.random.default_rng(8).random((8, 8, 3))
+    painted = meshquilt.paint(base, pixels, scale=0.5, seed=2, backend="cpu")
+    with tempfile.TemporaryDirectory() as folder:
+        ply = os.path.join(folder, "painted.ply")
+        meshquilt.write(painted, ply)
+        back = meshquilt.read(ply)
+        assert np.array_equal(back.colors, painted.colors)
+        assert np.allclose(back.vertices, painted.vertices)
+        pictures = {}
+        for up in ("y", "z"):
+            mine, theirs = os.path.join(folder, "module_%s.png" % up), os.path.join(folder, "cli_%s.png" % up)
+            meshquilt.render(painted, mine, width=160, height=120, mode="colors", view="front", up=up)
+            done = subprocess.run([CLI, "render", ply, "--mode", "colors", "--view", "front", "--up", up, "--size",
+                                   "160x120", "-o", theirs], capture_output=True, text=True)
+            assert done.returncode == 0, done.stderr
+            pictures[up] = open(mine, "rb").read()
+            assert pictures[up] == open(theirs, "rb").read()
+        assert pictures["y"] != pictures["z"]
+        with pytest.raises(meshquilt.Error, match="colors"):
+            meshquilt.write(meshquilt.Mesh(vertices=painted.vertices, faces=painted.faces,
+                                           colors=painted.colors[:-1]), ply)
+        with pytest.raises(meshquilt.Error, match="--up"):
+            meshquilt.render(painted, os.path.join(folder, "x.png"), up="w")
+
+
 def cli_relief(*args):
     with tempfile.TemporaryDirectory() as folder:
         out_path = os.path.join(folder, "out.ply")

@@ -205,6 +205,31 @@ TEST(Framing, FrontAndSideShowTheExpectedFaces) {
   EXPECT_NEAR(double(c.max_x - c.min_x + 1) / (c.max_y - c.min_y + 1), 2.0, 0.05);
 }
 
+TEST(Framing, UpShowsTheGivenAxisUpward) {
+  // From the front a box shows its x extent across and its up axis's extent upward: 0.5 x 2
+  // with y up (z, 1 deep, turned to face the camera), 0.5 x 1 with z up.
+  TriMesh mesh;
+  add_box(mesh, {0, 0, 0}, {0.5, 2, 1}, 0);
+  RenderOptions options;
+  options.width = options.height = 400;
+  options.samples = 1;
+  options.view = View::front;
+  const auto aspect = [&](const TriMesh& m) {
+    const Coverage c = coverage(render_mesh(m, options), options.background);
+    return double(c.max_x - c.min_x + 1) / (c.max_y - c.min_y + 1);
+  };
+  EXPECT_NEAR(aspect(mesh), 0.5, 0.02);
+  options.up = 1;
+  EXPECT_NEAR(aspect(mesh), 0.25, 0.01);
+  // x up: the box's y extent shows across, its x extent upward.
+  TriMesh lying;
+  add_box(lying, {0, 0, 0}, {2, 0.5, 1}, 0);
+  options.up = 0;
+  EXPECT_NEAR(aspect(lying), 0.25, 0.01);
+  options.up = 3;
+  EXPECT_THROW(render_mesh(mesh, options), InputError);
+}
+
 TEST(Framing, ObliqueViewLooksDownAt35Degrees) {
   const Vec3 d = view_direction(View::oblique);
   EXPECT_NEAR(glm::length(d), 1.0, 1e-12);
@@ -409,6 +434,7 @@ TEST_F(RenderCli, BadOptions) {
   expect_failure(mesh + " --size 640by480", dir_ / "out.png", 6, "--size");
   expect_failure(mesh + " --view below", dir_ / "out.png", 6, "--view");
   expect_failure(mesh + " --mode wireframe", dir_ / "out.png", 6, "--mode");
+  expect_failure(mesh + " --up w", dir_ / "out.png", 6, "--up");
   expect_failure(mesh, dir_ / "out.jpg", 4, "out.jpg");
   expect_failure(mesh, dir_ / "missing" / "out.png", 7, "out.png");
 }
