@@ -67,6 +67,7 @@ void run_paint(PaintArgs& args) {
                                   {"sample", {in.sample.width, in.sample.height}},
                                   {"pixels_per_unit", args.options.pixels_per_unit},
                                   {"levels", painted.levels},
+                                  {"sample_levels", painted.sample_levels},
                                   {"vertices", painted.mesh.num_vertices()},
                                   {"faces", painted.mesh.num_faces()},
                                   {"mean_cost", painted.mean_cost},

@@ -561,6 +561,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         py::dict out = dict_of(painted.mesh);
         const nlohmann::json stats = {
             {"pixels_per_unit", options.pixels_per_unit}, {"levels", painted.levels},
+            {"sample_levels", painted.sample_levels},
             {"vertices", painted.mesh.num_vertices()},   {"faces", painted.mesh.num_faces()},
             {"mean_cost", painted.mean_cost},             {"visits", painted.visits},
             {"batches", painted.batches},                 {"neighbours", painted.neighbours},

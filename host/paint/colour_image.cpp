@@ -2,6 +2,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -67,6 +68,59 @@ ColourImage read_colour_image(const std::filesystem::path& file) {
   if (bytes.size() >= 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) return read_png(bytes, file.string());
   if (bytes.size() >= 2 && bytes[0] == 'P' && bytes[1] >= '1' && bytes[1] <= '6') return read_netpbm_colour(bytes, file.string());
   throw IoError(ErrorKind::unknown_format, file.string() + ": not a PNG or Netpbm image");
+}
+
+namespace {
+
+// Each output cell's mean over [k * factor, (k + 1) * factor) of a wrapped row of `size` cells,
+// as (first cell, weights): a box filter for any factor.
+struct BoxWeights {
+  std::vector<int> first;
+  std::vector<std::vector<double>> weights;
+};
+
+BoxWeights box_weights(int size, int out) {
+  const double factor = static_cast<double>(size) / out;
+  BoxWeights box;
+  for (int k = 0; k < out; ++k) {
+    const double a = k * factor, b = (k + 1) * factor;
+    const int first = static_cast<int>(std::floor(a));
+    std::vector<double> w;
+    for (int i = first; i < b; ++i) w.push_back((std::min<double>(i + 1, b) - std::max<double>(i, a)) / factor);
+    box.first.push_back(first);
+    box.weights.push_back(std::move(w));
+  }
+  return box;
+}
+
+}  // namespace
+
+ColourImage halved(const ColourImage& image) {
+  ColourImage out;
+  out.width = image.width / 2;
+  out.height = image.height / 2;
+  if (image.width % 2 == 0 && image.height % 2 == 0) {
+    for (int y = 0; y < out.height; ++y)
+      for (int x = 0; x < out.width; ++x)
+        out.rgb.push_back(0.25 * (image.at(2 * x, 2 * y) + image.at(2 * x + 1, 2 * y) + image.at(2 * x, 2 * y + 1) +
+                                  image.at(2 * x + 1, 2 * y + 1)));
+    return out;
+  }
+  const BoxWeights bx = box_weights(image.width, out.width), by = box_weights(image.height, out.height);
+  std::vector<glm::dvec3> rows(static_cast<size_t>(out.width) * image.height, glm::dvec3(0.0));
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (size_t i = 0; i < bx.weights[x].size(); ++i)
+        rows[static_cast<size_t>(y) * out.width + x] +=
+            bx.weights[x][i] * image.at((bx.first[x] + static_cast<int>(i)) % image.width, y);
+  out.rgb.assign(static_cast<size_t>(out.width) * out.height, glm::dvec3(0.0));
+  for (int y = 0; y < out.height; ++y)
+    for (size_t i = 0; i < by.weights[y].size(); ++i) {
+      const int row = (by.first[y] + static_cast<int>(i)) % image.height;
+      for (int x = 0; x < out.width; ++x)
+        out.rgb[static_cast<size_t>(y) * out.width + x] += by.weights[y][i] * rows[static_cast<size_t>(row) * out.width + x];
+    }
+  return out;
 }
 
 }  // namespace meshquilt

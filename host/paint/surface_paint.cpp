@@ -54,18 +54,6 @@ int refinement_levels(const TriMesh& base, const PaintOptions& o) {
   return levels;
 }
 
-// The sample at half its size: each pixel the mean of a 2 x 2 block (even sizes only).
-ColourImage halved(const ColourImage& image) {
-  ColourImage out;
-  out.width = image.width / 2;
-  out.height = image.height / 2;
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      out.rgb.push_back(0.25 * (image.at(2 * x, 2 * y) + image.at(2 * x + 1, 2 * y) + image.at(2 * x, 2 * y + 1) +
-                                image.at(2 * x + 1, 2 * y + 1)));
-  return out;
-}
-
 // The edge (a, b) of each vertex split_faces(mesh, 1) adds, in the order it adds them.
 std::vector<std::pair<int32_t, int32_t>> midpoint_parents(const TriMesh& mesh) {
   std::vector<std::pair<int32_t, int32_t>> parents;
@@ -444,11 +432,20 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
   // Coarse to fine: the sample halved while it still holds a window and a pixel, one split level
   // for each halving, so that every level has about a vertex per pixel of its sample.
   std::vector<ColourImage> pyramid{sample};
-  while (static_cast<int>(pyramid.size()) <= result.levels && pyramid.back().width % 2 == 0 &&
-         pyramid.back().height % 2 == 0 && pyramid.back().width / 2 > options.window &&
+  while (static_cast<int>(pyramid.size()) <= result.levels && pyramid.back().width / 2 > options.window &&
          pyramid.back().height / 2 > options.window)
     pyramid.push_back(halved(pyramid.back()));
   const int coarsest = static_cast<int>(pyramid.size()) - 1;
+  result.sample_levels = static_cast<int>(pyramid.size());
+  // Each level's pixels per unit, and how a position grows to the next finer level: twice for an
+  // even side, a little more for an odd one (63 pixels over 31), each axis on its own.
+  std::vector<double> level_pixels_per_unit(pyramid.size(), options.pixels_per_unit);
+  std::vector<glm::dvec2> growth(pyramid.size(), glm::dvec2(1.0));
+  for (size_t k = 1; k < pyramid.size(); ++k) {
+    growth[k] = glm::dvec2(static_cast<double>(pyramid[k - 1].width) / pyramid[k].width,
+                           static_cast<double>(pyramid[k - 1].height) / pyramid[k].height);
+    level_pixels_per_unit[k] = level_pixels_per_unit[k - 1] / std::sqrt(growth[k].x * growth[k].y);
+  }
   // Synth's field on the base, then carried to each split.
   TriMesh mesh = base;
   std::vector<Vec3> directions = base_field(BaseSurface(base), constraints);
@@ -461,7 +458,7 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
   double cost = 0.0;
   const size_t total = total_visits(base, result.levels, coarsest, options);
   for (int step = coarsest; step >= 0; --step) {
-    const double pixels_per_unit = std::ldexp(options.pixels_per_unit, -step);
+    const double pixels_per_unit = level_pixels_per_unit[step];
     const BaseSurface surface(mesh);
     result.order = sweep_order(sweep_function(surface, directions));
     Painter painter(surface, directions, result.order, pyramid[step], device, pixels_per_unit, options, options.seed + step);
@@ -499,18 +496,20 @@ PaintResult paint_surface(const TriMesh& base, const ColourImage& sample,
       }
       break;
     }
-    // To the next level: old vertices at twice their position; a new one (an edge's midpoint)
-    // where its first parent's position and its offset in that parent's frame put it.
+    // To the next level: old vertices at their position grown (twice, for even sides); a new one
+    // (an edge's midpoint) where its first parent's position and its offset in that parent's
+    // frame put it.
     const std::vector<std::pair<int32_t, int32_t>> parents = midpoint_parents(mesh);
     TriMesh finer = split_faces(mesh, 1);
-    const double next = 2.0 * pixels_per_unit;
+    const double next = level_pixels_per_unit[step - 1];
+    const glm::dvec2 grow = growth[step];
     std::vector<glm::dvec2> carried(finer.num_vertices());
-    for (size_t v = 0; v < mesh.num_vertices(); ++v) carried[v] = 2.0 * sources[v];
+    for (size_t v = 0; v < mesh.num_vertices(); ++v) carried[v] = grow * sources[v];
     for (size_t k = 0; k < parents.size(); ++k) {
       const int32_t a = parents[k].first;
       const Vec3 q = finer.positions[mesh.num_vertices() + k] - mesh.positions[a];
       carried[mesh.num_vertices() + k] =
-          2.0 * sources[a] + frame_offset(field_frame(surface.vertex_normals[a], directions[a]), q, next);
+          grow * sources[a] + frame_offset(field_frame(surface.vertex_normals[a], directions[a]), q, next);
     }
     sources = std::move(carried);
     directions = split_field(mesh, directions, finer, parents);

@@ -52,6 +52,7 @@ struct PaintResult {
   std::vector<int32_t> order;          //!< the sweep: vertices in the order they were coloured
   std::vector<Vec3> directions;        //!< #V the field at each vertex: its frame's x axis
   int levels = 0;                      //!< 1-to-4 splits of the base
+  int sample_levels = 0;               //!< samples run coarse to fine: the sample and its halvings
   double mean_cost = 0.0;              //!< mean neighbourhood mismatch of the last pass, per neighbour
   size_t visits = 0;                   //!< vertices coloured, over every level and pass
   size_t batches = 0;                  //!< batches of them scored side by side

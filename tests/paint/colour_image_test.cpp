@@ -1,11 +1,16 @@
 // The sample reader against images written here (PPM by hand, PNG through our encoder), and
-// bilinear, wrapped sampling in closed form.
+// bilinear, wrapped sampling in closed form, and halving of any size against a sub-cell reference.
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "core/error.h"
 #include "paint/colour_image.h"
@@ -59,6 +64,40 @@ TEST(ColourImage, SamplesBilinearlyBetweenCentresAndWraps) {
   EXPECT_EQ(image.sample({1.25, 0.7}), glm::dvec3(0.75));
   EXPECT_EQ(image.sample({2.0, 0.5}), glm::dvec3(0.5));   // past the right border: back to the left pixel
   EXPECT_EQ(image.sample({-1.5, 3.5}), glm::dvec3(0.0));  // whole periods away
+}
+
+// The reference: each pixel cut into `out` x `out_h` sub-cells, so that every box edge k * w / out
+// falls on a sub-cell edge, and each box the plain mean of the sub-cells it holds.
+glm::dvec3 box_mean_by_subcells(const ColourImage& image, int out_w, int out_h, int x, int y) {
+  glm::dvec3 sum(0.0);
+  long count = 0;
+  for (long sy = static_cast<long>(y) * image.height; sy < static_cast<long>(y + 1) * image.height; ++sy)
+    for (long sx = static_cast<long>(x) * image.width; sx < static_cast<long>(x + 1) * image.width; ++sx) {
+      sum += image.at(static_cast<int>(sx / out_w), static_cast<int>(sy / out_h));
+      ++count;
+    }
+  return sum / static_cast<double>(count);
+}
+
+TEST(ColourImage, HalvesAnySizeByBoxMeans) {
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{8, 6}, {63, 47}, {17, 10}, {9, 9}}) {
+    ColourImage image;
+    image.width = w;
+    image.height = h;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) image.rgb.emplace_back(std::sin(1.3 * x + 0.7 * y), (x * 7 + y * 3) % 5 / 4.0, 0.5);
+    const ColourImage half = halved(image);
+    ASSERT_EQ(half.width, w / 2);
+    ASSERT_EQ(half.height, h / 2);
+    glm::dvec3 mean(0.0), half_mean(0.0);
+    for (const glm::dvec3& c : image.rgb) mean += c / static_cast<double>(image.rgb.size());
+    for (const glm::dvec3& c : half.rgb) half_mean += c / static_cast<double>(half.rgb.size());
+    EXPECT_NEAR(glm::length(mean - half_mean), 0.0, 1e-12) << w << " x " << h;
+    for (int y = 0; y < half.height; ++y)
+      for (int x = 0; x < half.width; ++x)
+        EXPECT_NEAR(glm::length(half.at(x, y) - box_mean_by_subcells(image, half.width, half.height, x, y)), 0.0, 1e-12)
+            << w << " x " << h << " at " << x << ", " << y;
+  }
 }
 
 TEST(ColourImage, BadFilesGiveOneLineErrors) {
