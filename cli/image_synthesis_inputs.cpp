@@ -1,5 +1,7 @@
 #include "image_synthesis_inputs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -16,7 +18,8 @@ namespace meshquilt::cli {
 
 ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
                                                  const std::string& field, double scale, double pixels_per_unit,
-                                                 const std::string& output, const std::string& stats) {
+                                                 int sample_width, const std::string& output,
+                                                 const std::string& stats) {
   if (!(scale > 0.0 && scale <= 10.0))
     throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
   check_mesh_output(output);
@@ -25,6 +28,11 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   ImageSynthesisInputs in;
   in.base = prepare_base(read_mesh(base), base);
   if (!image.empty()) in.sample = read_colour_image(image);
+  if (!image.empty() && sample_width > 0) {
+    const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(in.sample.height) * sample_width /
+                                                                in.sample.width)));
+    in.sample = shrunk(in.sample, sample_width, height);
+  }
   if (!field.empty()) in.constraints = read_field_file(field, in.base);
   in.diagonal = glm::length(bounding_box(in.base.positions).extent());
   in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * in.diagonal);

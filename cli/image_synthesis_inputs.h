@@ -25,12 +25,15 @@ struct ImageSynthesisInputs {
 };
 
 //! Checks the output and stats paths, then reads the inputs (the sample left empty when `image`
-//! is). pixels_per_unit > 0 is taken as given; otherwise --scale S makes the sample's width S x
-//! the base's bounding-box diagonal.
-//! \throw InputError for a scale outside (0, 10]; what the readers throw.
+//! is), the sample shrunk to sample_width pixels across (its aspect kept) when that is > 0.
+//! pixels_per_unit > 0 is taken as given; otherwise --scale S makes the sample's width S x the
+//! base's bounding-box diagonal.
+//! \throw InputError for a scale outside (0, 10] or a sample width past the image's; what the
+//!        readers throw.
 ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,
                                                  const std::string& field, double scale, double pixels_per_unit,
-                                                 const std::string& output, const std::string& stats);
+                                                 int sample_width, const std::string& output,
+                                                 const std::string& stats);
 
 //! The device of --backend (auto|vulkan|cpu) that scores neighbourhoods; why `auto` chose the
 //! CPU, if it says, goes to stderr.

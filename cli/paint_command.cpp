@@ -27,6 +27,7 @@ struct PaintArgs {
   std::string base, image, output, field, stats, write_field, backend = "auto", progress = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
+  int sample_width = 0;  // 0: the image as it is
   int atlas = 0;
   PaintOptions options;
 };
@@ -41,7 +42,7 @@ void run_paint(PaintArgs& args) {
     throw InputError("--atlas: expected 16..16384 texels a side, got " + std::to_string(args.atlas), ErrorKind::invalid_option);
   if (!args.write_field.empty()) check_writable(args.write_field);
   const ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
-                                                               args.pixels_per_unit, args.output, args.stats);
+                                                               args.pixels_per_unit, args.sample_width, args.output, args.stats);
   args.options.pixels_per_unit = in.pixels_per_unit;
   const std::unique_ptr<engine::Device> device = open_synthesis_device(args.backend);
   const ProgressMode progress_mode = parse_progress_mode(args.progress);
@@ -104,6 +105,9 @@ void add_paint_command(CLI::App& app) {
   cmd->add_option("--scale", args->scale, "the sample's width over the base's bounding-box diagonal")
       ->capture_default_str();
   cmd->add_option("--pixels-per-unit", args->pixels_per_unit, "sample pixels per base unit (instead of --scale)");
+  cmd->add_option("--sample-width", args->sample_width,
+                  "shrink the image to this many pixels across first (a box filter, aspect kept): a large photo "
+                  "at a size the base can hold");
   cmd->add_option("--field", args->field, "guidance field file, as synth's --field");
   cmd->add_option("--window", args->options.window, "neighbourhood width in pixels, odd, 3..21")->capture_default_str();
   cmd->add_option("--passes", args->options.passes, "the sweep, then passes over whole neighbourhoods")

@@ -33,6 +33,7 @@ struct ReliefArgs {
   std::string base, image, output, field, stats, write_sample, write_field, backend = "auto", progress = "auto";
   double scale = 0.25;
   double pixels_per_unit = 0.0;
+  int sample_width = 0;  // 0: the image as it is
   ReliefOptions options;
   // --from: the model whose detail is the sample.
   std::string model;
@@ -84,7 +85,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
   if (!args.write_sample.empty()) check_writable(args.write_sample);
   if (!args.write_field.empty()) check_writable(args.write_field);
   ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,
-                                                         args.pixels_per_unit, args.output, args.stats);
+                                                         args.pixels_per_unit, args.sample_width, args.output, args.stats);
   nlohmann::json from;
   if (!args.model.empty()) from = sample_from_model(args, in, height_given, args.pixels_per_unit > 0.0);
   args.options.paint.pixels_per_unit = in.pixels_per_unit;
@@ -145,6 +146,8 @@ void add_relief_command(CLI::App& app) {
   cmd->add_option("--scale", args->scale, "the image's width over the base's bounding-box diagonal")
       ->capture_default_str();
   cmd->add_option("--pixels-per-unit", args->pixels_per_unit, "image pixels per base unit (instead of --scale)");
+  cmd->add_option("--sample-width", args->sample_width,
+                  "with --image: shrink it to this many pixels across first (a box filter, aspect kept)");
   cmd->add_option("--field", args->field, "guidance field file, as synth's --field");
   cmd->add_option("--clearance", args->options.clearance,
                   "share of the room along a normal (to the surface met, or the radius of a hollow) a height may take")

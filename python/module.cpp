@@ -316,9 +316,10 @@ void run_cancellable(Job& job, Work&& work) {
 
 }  // namespace
 
-// An (H, W, 3) or, where `grey` allows, (H, W) array of values in [0, 1] as a sample image.
+// An (H, W, 3) or, where `grey` allows, (H, W) array of values in [0, 1] as a sample image,
+// shrunk to sample_width pixels across (aspect kept) when that is > 0.
 ColourImage sample_image(const py::array_t<double, py::array::c_style | py::array::forcecast>& image, const char* what,
-                         bool grey) {
+                         bool grey, int sample_width) {
   const bool plane = grey && image.ndim() == 2;
   if (!plane && (image.ndim() != 3 || image.shape(2) != 3))
     throw InputError(std::string(what) + (grey ? ": image must be an (H, W) or (H, W, 3) array"
@@ -336,7 +337,10 @@ ColourImage sample_image(const py::array_t<double, py::array::c_style | py::arra
       throw InputError(std::string(what) + ": image values must lie in [0, 1]", ErrorKind::invalid_option);
     sample.rgb.push_back(c);
   }
-  return sample;
+  if (sample_width <= 0) return sample;
+  const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(sample.height) * sample_width /
+                                                              sample.width)));
+  return shrunk(sample, sample_width, height);
 }
 
 // Sample pixels per base unit: given, or the sample's width `scale` x the base's diagonal.
@@ -539,9 +543,9 @@ PYBIND11_MODULE(_meshquilt, m) {
          const py::array_t<double, py::array::c_style | py::array::forcecast>& image, double scale,
          double pixels_per_unit, int window, int passes, double coherence, uint64_t seed, const std::string& backend,
          std::optional<py::function> progress, CancelToken* cancel, std::optional<Array3d> field_points,
-         std::optional<Array3d> field_directions) {
+         std::optional<Array3d> field_directions, int sample_width) {
         const auto start = std::chrono::steady_clock::now();
-        const ColourImage sample = sample_image(image, "paint", false);
+        const ColourImage sample = sample_image(image, "paint", false, sample_width);
         const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
         const std::vector<FieldConstraint> constraints =
             field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
@@ -573,7 +577,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("base_vertices"), py::arg("base_faces"), py::arg("image"), py::arg("scale") = 0.25,
       py::arg("pixels_per_unit") = 0.0, py::arg("window") = 7, py::arg("passes") = 2, py::arg("coherence") = 2.0,
       py::arg("seed") = 1, py::arg("backend") = "auto", py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
-      py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
+      py::arg("field_points") = py::none(), py::arg("field_directions") = py::none(), py::arg("sample_width") = 0);
 
   m.def(
       "relief",
@@ -583,7 +587,7 @@ PYBIND11_MODULE(_meshquilt, m) {
          std::optional<std::vector<double>> region, double smoothing, int pixels, double scale, double pixels_per_unit,
          int window, int passes, double coherence, uint64_t seed, const std::string& backend, double clearance,
          std::optional<py::function> progress, CancelToken* cancel,
-         std::optional<Array3d> field_points, std::optional<Array3d> field_directions) {
+         std::optional<Array3d> field_points, std::optional<Array3d> field_directions, int sample_width) {
         const auto start = std::chrono::steady_clock::now();
         if (image.has_value() == model_vertices.has_value())
           throw InputError("relief: expected one of image and model", ErrorKind::invalid_option);
@@ -597,7 +601,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         ColourImage sample;
         nlohmann::json from;
         if (image) {
-          sample = sample_image(*image, "relief", true);
+          sample = sample_image(*image, "relief", true, sample_width);
           options.paint.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
         } else {
           if (!model_faces) throw InputError("relief: model needs its faces", ErrorKind::invalid_option);
@@ -654,7 +658,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("window") = 7, py::arg("passes") = 2, py::arg("coherence") = 2.0, py::arg("seed") = 1,
       py::arg("backend") = "auto",
       py::arg("clearance") = 0.4, py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
-      py::arg("field_points") = py::none(), py::arg("field_directions") = py::none());
+      py::arg("field_points") = py::none(), py::arg("field_directions") = py::none(), py::arg("sample_width") = 0);
 
   m.def(
       "embed",

@@ -96,16 +96,26 @@ BoxWeights box_weights(int size, int out) {
 }  // namespace
 
 ColourImage halved(const ColourImage& image) {
+  if (image.width % 2 != 0 || image.height % 2 != 0) return shrunk(image, image.width / 2, image.height / 2);
   ColourImage out;
   out.width = image.width / 2;
   out.height = image.height / 2;
-  if (image.width % 2 == 0 && image.height % 2 == 0) {
-    for (int y = 0; y < out.height; ++y)
-      for (int x = 0; x < out.width; ++x)
-        out.rgb.push_back(0.25 * (image.at(2 * x, 2 * y) + image.at(2 * x + 1, 2 * y) + image.at(2 * x, 2 * y + 1) +
-                                  image.at(2 * x + 1, 2 * y + 1)));
-    return out;
-  }
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      out.rgb.push_back(0.25 * (image.at(2 * x, 2 * y) + image.at(2 * x + 1, 2 * y) + image.at(2 * x, 2 * y + 1) +
+                                image.at(2 * x + 1, 2 * y + 1)));
+  return out;
+}
+
+ColourImage shrunk(const ColourImage& image, int width, int height) {
+  if (width < 1 || height < 1 || width > image.width || height > image.height)
+    throw InputError("{sample_width}: the image can only shrink, to at least a pixel (" + std::to_string(image.width) +
+                         " x " + std::to_string(image.height) + " to " + std::to_string(width) + " x " +
+                         std::to_string(height) + ")",
+                     ErrorKind::invalid_option);
+  ColourImage out;
+  out.width = width;
+  out.height = height;
   const BoxWeights bx = box_weights(image.width, out.width), by = box_weights(image.height, out.height);
   std::vector<glm::dvec3> rows(static_cast<size_t>(out.width) * image.height, glm::dvec3(0.0));
   for (int y = 0; y < image.height; ++y)

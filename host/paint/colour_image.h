@@ -26,10 +26,14 @@ struct ColourImage {
 //! written as.
 inline double luma(const glm::dvec3& rgb) { return 0.299 * rgb.r + 0.587 * rgb.g + 0.114 * rgb.b; }
 
-//! The image at half its size, wrapping round: each pixel the mean of a 2 x 2 block where both
-//! sides are even; otherwise each side shrunk to its half rounded down (63 to 31) and each pixel
-//! the mean over its box of the image as constant pixels (a box filter), which keeps the mean.
+//! The image at half its size: each pixel the mean of a 2 x 2 block where both sides are even;
+//! otherwise shrunk to half each side rounded down (63 to 31).
 ColourImage halved(const ColourImage& image);
+
+//! The image shrunk to width x height: each pixel the mean over its box of the image taken as
+//! constant pixels (a box filter, which keeps the image's mean).
+//! \throw InputError(invalid_option) naming {sample_width} for a size under 1 or over the image's.
+ColourImage shrunk(const ColourImage& image, int width, int height);
 
 //! Reads a PNG (any colour type, through libpng; alpha dropped) or a Netpbm file (PPM in
 //! colour, PGM and PBM as grey).

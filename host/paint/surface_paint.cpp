@@ -49,7 +49,7 @@ int refinement_levels(const TriMesh& base, const PaintOptions& o) {
   if (levels > 12 || vertices > static_cast<double>(o.max_vertices))
     throw InputError("{pixels_per_unit}: " + std::to_string(o.pixels_per_unit) + " sample pixels per base unit needs about " +
                          std::to_string(static_cast<long long>(vertices)) + " vertices (at most " +
-                         std::to_string(o.max_vertices) + "): use fewer pixels per unit",
+                         std::to_string(o.max_vertices) + "): use fewer pixels per unit (a smaller {scale} or {sample_width})",
                      ErrorKind::invalid_option);
   return levels;
 }

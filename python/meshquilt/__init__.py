@@ -132,18 +132,19 @@ def guidance(base: MeshLike, field: Optional[Field] = None) -> Tuple[np.ndarray,
 def paint(base: MeshLike, image: Any, *, scale: float = 0.25, pixels_per_unit: float = 0.0, window: int = 7,
           passes: int = 2, coherence: float = 2.0, seed: int = 1, backend: str = "auto",
           progress: Optional[Callable[[float, float], None]] = None, cancel: Optional[CancelToken] = None,
-          field: Optional[Field] = None) -> Result:
+          field: Optional[Field] = None, sample_width: int = 0) -> Result:
     """Colours `base` from an image sample as `meshquilt paint` does (Turk 2001, swept along synth's
     field): `image` an (H, W, 3) array of colours in [0, 1], row 0 at the top; `scale` the sample's
     width over the base's bounding-box diagonal, or `pixels_per_unit` given; `coherence` the weight
-    against a sample position few neighbours propose (as `--coherence`). Returns the base
+    against a sample position few neighbours propose (as `--coherence`); `sample_width` > 0 shrinks
+    the image to that many pixels across first (as `--sample-width`). Returns the base
     refined until a vertex falls every sample pixel, its `colors` (N, 3) uint8 and `stats`; the
     same seed gives the same colours as the command line on either back end. `progress(share,
     seconds_left)` and `cancel` work as synth's."""
     bv, bf = _arrays(base, "base")
     fp, fd = _field_arrays(field)
     d = _meshquilt.paint(bv, bf, np.ascontiguousarray(image, dtype=np.float64), scale, pixels_per_unit, window, passes,
-                         coherence, seed, backend, progress, cancel, fp, fd)
+                         coherence, seed, backend, progress, cancel, fp, fd, sample_width)
     return _mesh(d, Result, stats=d["stats"])
 
 
@@ -151,12 +152,13 @@ def relief(base: MeshLike, heights: Any = None, *, height: float = 0.0, model: O
            region: Optional[Sequence[float]] = None, smoothing: float = 0.0, pixels: int = 32, scale: float = 0.25,
            pixels_per_unit: float = 0.0, window: int = 7, passes: int = 2, coherence: float = 2.0, seed: int = 1,
            backend: str = "auto", clearance: float = 0.4, progress: Optional[Callable[[float, float], None]] = None,
-           cancel: Optional[CancelToken] = None, field: Optional[Field] = None) -> Result:
+           cancel: Optional[CancelToken] = None, field: Optional[Field] = None, sample_width: int = 0) -> Result:
     """Raises a relief over `base` as `meshquilt relief` does: from `heights`, an (H, W) array (or
     (H, W, 3), read by its luma) in [0, 1] with white high, raised by `height` base units; or from
     `model`'s detail (it minus its copy smoothed over `smoothing` model units), over `region`
     (x, y, z, radius in model units, or round its richest detail) flattened into `pixels` a side,
-    at its own height scaled as its width is unless `height` is given. Returns the base refined
+    at its own height scaled as its width is unless `height` is given; `sample_width` shrinks
+    `heights` as paint's does. Returns the base refined
     and raised, `heights` (N,) each vertex's displacement along the base's smooth normal, and
     `stats`; the same seed gives the command line's vertices on either back end. `progress` and
     `cancel` work as synth's."""
@@ -168,7 +170,7 @@ def relief(base: MeshLike, heights: Any = None, *, height: float = 0.0, model: O
     image = None if heights is None else np.ascontiguousarray(heights, dtype=np.float64)
     d = _meshquilt.relief(bv, bf, image, height, mv, mf, None if region is None else [float(x) for x in region],
                           smoothing, pixels, scale, pixels_per_unit, window, passes, coherence, seed, backend,
-                          clearance, progress, cancel, fp, fd)
+                          clearance, progress, cancel, fp, fd, sample_width)
     return _mesh(d, Result, stats=d["stats"], heights=d["heights"])
 
 

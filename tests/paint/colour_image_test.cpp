@@ -100,6 +100,25 @@ TEST(ColourImage, HalvesAnySizeByBoxMeans) {
   }
 }
 
+TEST(ColourImage, ShrinksToAnySizeByBoxMeansAndNeverGrows) {
+  ColourImage image;
+  image.width = 63;
+  image.height = 47;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) image.rgb.emplace_back(std::cos(0.9 * x - 0.4 * y), (x * y) % 7 / 6.0, 0.25);
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{20, 13}, {1, 1}, {63, 47}, {62, 5}}) {
+    const ColourImage small = shrunk(image, w, h);
+    ASSERT_EQ(small.width, w);
+    ASSERT_EQ(small.height, h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        EXPECT_NEAR(glm::length(small.at(x, y) - box_mean_by_subcells(image, w, h, x, y)), 0.0, 1e-12)
+            << w << " x " << h << " at " << x << ", " << y;
+  }
+  EXPECT_THROW(shrunk(image, 64, 47), InputError);
+  EXPECT_THROW(shrunk(image, 0, 10), InputError);
+}
+
 TEST(ColourImage, BadFilesGiveOneLineErrors) {
   write(temp("text.png"), "not an image");
   write(temp("short.ppm"), "P6\n4 4\n255\nxx");

@@ -74,6 +74,43 @@ TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
   EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
 }
 
+TEST(PaintCli, ShrinksTheSampleToTheWidthAsked) {
+  // 8 x 8, left half red, right half white: at 4 pixels across, two red columns and two white,
+  // read at half the pixels per unit for the same --scale.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_cli_width";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream image(dir / "sample.ppm", std::ios::binary);
+    image << "P6\n8 8\n255\n";
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) image << (x < 4 ? std::string("\xff\x00\x00", 3) : std::string("\xff\xff\xff", 3));
+  }
+  const std::string base = std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off", out = (dir / "out.ply").string();
+  const auto stats_of = [&](const std::string& extra) {
+    const std::string stats = (dir / "stats.json").string();
+    const test::CliResult r = test::run_cli("paint --base " + base + " --image " + (dir / "sample.ppm").string() +
+                                            " --scale 0.5 --backend cpu --progress none --stats " + stats + extra + " -o " + out);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(stats);
+    return nlohmann::json::parse(in);
+  };
+  const nlohmann::json whole = stats_of(""), half = stats_of(" --sample-width 4");
+  EXPECT_EQ(half["sample"], nlohmann::json::array({4, 4}));
+  EXPECT_NEAR(half["pixels_per_unit"].get<double>(), 0.5 * whole["pixels_per_unit"].get<double>(), 1e-9);
+  // Red and white halves still: more red than white (green under half) at about half the vertices.
+  const TriMesh painted = read_mesh(out);
+  size_t red = 0;
+  for (const auto& c : painted.colors) red += c[1] < 128;
+  EXPECT_GT(red, painted.num_vertices() / 4);
+  EXPECT_LT(red, 3 * painted.num_vertices() / 4);
+  const std::string before = test::read_file(out);
+  const test::CliResult grow = test::run_cli("paint --base " + base + " --image " + (dir / "sample.ppm").string() +
+                                             " --sample-width 9 -o " + out);
+  EXPECT_EQ(grow.exit_code, 6) << grow.output;
+  EXPECT_NE(grow.output.find("--sample-width"), std::string::npos) << grow.output;
+  EXPECT_EQ(test::read_file(out), before);
+}
+
 TEST(PaintCli, ReportsProgressAsJsonLines) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_progress";
   std::filesystem::create_directories(dir);

@@ -149,6 +149,11 @@ def test_paint_equals_the_command_line():
     assert result.stats["vertices"] == len(v) and result.stats["levels"] > 0
     with pytest.raises(meshquilt.Error, match="image"):
         meshquilt.paint(base, pixels, scale=0.5)  # bytes, not colours in [0, 1]
+    # Shrunk to 6 pixels across (5 down): half the pixels per unit for the same scale.
+    shrunk = meshquilt.paint(base, pixels / 255.0, scale=0.5, sample_width=6, backend="cpu")
+    assert shrunk.stats["pixels_per_unit"] == pytest.approx(0.5 * result.stats["pixels_per_unit"])
+    with pytest.raises(meshquilt.Error, match="sample_width|sample-width"):
+        meshquilt.paint(base, pixels / 255.0, scale=0.5, sample_width=13)
 
 
 def test_painted_colours_are_written_read_back_and_rendered_as_the_command_line_does():
