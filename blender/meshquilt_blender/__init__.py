@@ -57,6 +57,9 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
                                            description="The sample painted over the active mesh (Turk 2001)")
     paint_scale: bpy.props.FloatProperty(name="Image scale", default=0.25, min=0.001, max=10.0,
                                          description="The image's width over the base's bounding-box diagonal")
+    paint_pixels: bpy.props.IntProperty(name="Image pixels", default=128, min=0, max=4096,
+                                        description="Shrink a wider image to this many pixels across first (a box "
+                                                    "filter), so a photo fits the vertices paint allows; 0: as it is")
     relief_height: bpy.props.FloatProperty(name="Relief height", default=0.0, min=0.0,
                                            description="Raise the image's luma (white high) by this many base "
                                                        "units instead of colouring; 0: colour only")
@@ -332,8 +335,10 @@ class MESHQUILT_OT_paint(JobOperator, bpy.types.Operator):
         self._base = context.active_object
         self._relief = s.relief_height > 0.0
         field = guide_field(s.guide_object, self._base) if s.guide_object else None
+        width = s.paint_image.size[0]
+        sample_width = s.paint_pixels if 0 < s.paint_pixels < width else 0
         return quilt_job.PaintJob(module, mesh_arrays(self._base), image_array(s.paint_image), s.paint_scale, s.seed,
-                                  field=field, relief_height=s.relief_height).start()
+                                  field=field, relief_height=s.relief_height, sample_width=sample_width).start()
 
     def _apply(self, context, result):
         obj = add_painted_object(context, self._base, result, "relief" if self._relief else "painted")
@@ -659,6 +664,7 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
         box = layout.box()
         box.template_ID(s, "paint_image", open="image.open")
         box.prop(s, "paint_scale")
+        box.prop(s, "paint_pixels")
         box.prop(s, "relief_height")
         box.operator(MESHQUILT_OT_paint.bl_idname)
 

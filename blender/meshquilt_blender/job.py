@@ -186,13 +186,14 @@ class PaintJob(BackgroundJob):
     """The module's paint (or, with a relief height, its relief) of `base` from `image`:
     `result` is its Result."""
 
-    def __init__(self, module, base, image, scale, seed, field=None, relief_height=0.0):
+    def __init__(self, module, base, image, scale, seed, field=None, relief_height=0.0, sample_width=0):
         super().__init__(module)
         self.base, self.image, self.field = base, image, field
-        self.scale, self.seed, self.relief_height = scale, seed, relief_height
+        self.scale, self.seed, self.relief_height, self.sample_width = scale, seed, relief_height, sample_width
 
     def _work(self):
-        common = dict(scale=self.scale, seed=self.seed, field=self.field, progress=self._progress, cancel=self._token)
+        common = dict(scale=self.scale, seed=self.seed, field=self.field, progress=self._progress, cancel=self._token,
+                      sample_width=self.sample_width)
         if self.relief_height > 0.0:
             return self.module.relief(self.base, self.image, height=self.relief_height, **common)
         return self.module.paint(self.base, self.image, **common)

@@ -231,6 +231,7 @@ image.pixels.foreach_set(rgba[::-1].ravel().astype(np.float32))  # Blender keeps
 read_back = meshquilt_blender.image_array(image)
 check(np.abs(read_back - rgb).max() < 1e-6, "the image is read with row 0 at the top")
 settings.paint_image, settings.paint_scale, settings.seed, settings.relief_height = image, 0.5, 4, 0.0
+check(settings.paint_pixels == 128, "images wider than 128 pixels are shrunk by default")
 before = set(bpy.data.objects.keys())
 check(bpy.ops.meshquilt.paint() == {"FINISHED"}, "Paint finishes")
 painted = [bpy.data.objects[name] for name in set(bpy.data.objects.keys()) - before]
@@ -257,6 +258,15 @@ expected = meshquilt.relief(meshquilt_blender.mesh_arrays(cube), read_back, heig
 heights = np.empty(len(raised.vertices))
 raised.attributes["meshquilt_height"].data.foreach_get("value", heights)
 check(np.allclose(heights, expected.heights, atol=1e-6) and heights.max() > 0.03, "the relief has the module's heights")
+settings.relief_height, settings.paint_pixels = 0.0, 8
+before = set(bpy.data.objects.keys())
+check(bpy.ops.meshquilt.paint() == {"FINISHED"}, "Paint from the image shrunk to 8 pixels")
+shrunk = [bpy.data.objects[name] for name in set(bpy.data.objects.keys()) - before][0].data
+expected = meshquilt.paint(meshquilt_blender.mesh_arrays(cube), read_back, scale=0.5, seed=4, sample_width=8)
+whole = meshquilt.paint(meshquilt_blender.mesh_arrays(cube), read_back, scale=0.5, seed=4)
+check(len(shrunk.vertices) == len(expected.vertices) and len(expected.vertices) < len(whole.vertices),
+      "the shrunk image is painted at its own pixels per unit")
+settings.paint_pixels = 128
 # A paint job cancelled from its progress ends with no result; one left alone reports its share.
 job = meshquilt_blender.job.PaintJob(meshquilt, meshquilt_blender.mesh_arrays(cube), read_back, 0.5, 4)
 job._progress = lambda share, left, job=job: (job.cancel() if share > 0.3 else None)
