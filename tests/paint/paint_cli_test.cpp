@@ -21,16 +21,18 @@
 namespace meshquilt {
 namespace {
 
+// 8 x 8: the left half red, the right half white.
+void write_half_red_sample(const std::filesystem::path& file) {
+  std::ofstream image(file, std::ios::binary);
+  image << "P6\n8 8\n255\n";
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) image << (x < 4 ? std::string("\xff\x00\x00", 3) : std::string("\xff\xff\xff", 3));
+}
+
 TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_cli";
   std::filesystem::create_directories(dir);
-  {
-    // 8 x 8: the left half red, the right half white.
-    std::ofstream image(dir / "sample.ppm", std::ios::binary);
-    image << "P6\n8 8\n255\n";
-    for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 8; ++x) image << (x < 4 ? std::string("\xff\x00\x00", 3) : std::string("\xff\xff\xff", 3));
-  }
+  write_half_red_sample(dir / "sample.ppm");
   const std::string out = (dir / "out.ply").string();
   const test::CliResult r = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off --image " +
                               (dir / "sample.ppm").string() + " --scale 0.5 -o " + out);
@@ -79,12 +81,7 @@ TEST(PaintCli, ShrinksTheSampleToTheWidthAsked) {
   // read at half the pixels per unit for the same --scale.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_paint_cli_width";
   std::filesystem::create_directories(dir);
-  {
-    std::ofstream image(dir / "sample.ppm", std::ios::binary);
-    image << "P6\n8 8\n255\n";
-    for (int y = 0; y < 8; ++y)
-      for (int x = 0; x < 8; ++x) image << (x < 4 ? std::string("\xff\x00\x00", 3) : std::string("\xff\xff\xff", 3));
-  }
+  write_half_red_sample(dir / "sample.ppm");
   const std::string base = std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off", out = (dir / "out.ply").string();
   const auto stats_of = [&](const std::string& extra) {
     const std::string stats = (dir / "stats.json").string();

@@ -69,6 +69,32 @@ ColourImage stripes() {
   return image;
 }
 
+constexpr double kStripePixelsPerUnit = 16.0;
+
+// stripes() over `plane` along the field d, at kStripePixelsPerUnit.
+PaintResult paint_stripes(const TriMesh& plane, const Vec3& d, engine::Device& device) {
+  PaintOptions options;
+  options.pixels_per_unit = kStripePixelsPerUnit;
+  return paint_surface(plane, stripes(), along(plane, d), options, device);
+}
+
+glm::dvec3 colour_of(const PaintResult& p, size_t v) {
+  const auto& c = p.mesh.colors[v];
+  return glm::dvec3(c[0], c[1], c[2]) / 255.0;
+}
+
+// The share of vertices painted with the sample at x * pixels_per_unit + phase, to rounding, for
+// one phase for the whole plane (the first vertex's, drawn at random): a translated copy along x.
+double share_of_one_translated_copy(const PaintResult& painted, const ColourImage& image, double pixels_per_unit) {
+  const double phase = painted.source[0].x - painted.mesh.positions[0].x * pixels_per_unit;
+  size_t close = 0;
+  for (size_t v = 0; v < painted.mesh.num_vertices(); ++v) {
+    const glm::dvec3 expected = image.sample({painted.mesh.positions[v].x * pixels_per_unit + phase, 0.5});
+    close += glm::length(colour_of(painted, v) - expected) < 1.0 / 255.0;
+  }
+  return static_cast<double>(close) / static_cast<double>(painted.mesh.num_vertices());
+}
+
 TEST_P(SurfacePaint, AConstantSampleGivesItsColourEverywhere) {
   ColourImage image;
   image.width = image.height = 8;
@@ -85,23 +111,8 @@ TEST_P(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
   // A plane one sample pixel per grid step, the field along x: the painted colours are the
   // stripes at x * pixels_per_unit + phase for one phase, up to the blend at stripe borders.
   const TriMesh plane = test::flat_grid(40, 20, 1.0 / 16.0, 0.0);
-  PaintOptions options;
-  options.pixels_per_unit = 16.0;
-  const ColourImage image = stripes();
-  const PaintResult painted = paint_surface(plane, image, along(plane, Vec3(1, 0, 0)), options, device());
-  const auto colour = [](const PaintResult& p, size_t v) {
-    const auto& c = p.mesh.colors[v];
-    return glm::dvec3(c[0], c[1], c[2]) / 255.0;
-  };
-  // One phase for the whole plane (the first vertex's, drawn at random): every colour is the
-  // stripes' there, to rounding.
-  const double phase = painted.source[0].x - painted.mesh.positions[0].x * options.pixels_per_unit;
-  size_t close = 0;
-  for (size_t v = 0; v < painted.mesh.num_vertices(); ++v) {
-    const glm::dvec3 expected = image.sample({painted.mesh.positions[v].x * options.pixels_per_unit + phase, 0.5});
-    close += glm::length(colour(painted, v) - expected) < 1.0 / 255.0;
-  }
-  EXPECT_GT(static_cast<double>(close) / static_cast<double>(painted.mesh.num_vertices()), 0.99);
+  const PaintResult painted = paint_stripes(plane, Vec3(1, 0, 0), device());
+  EXPECT_GT(share_of_one_translated_copy(painted, stripes(), kStripePixelsPerUnit), 0.99);
   // Grid neighbours along x in the same stripe (more red than blue, or less): 3 in 4 when the
   // stripes run across x, all of them when the field is turned a quarter and they run along x.
   const auto same_along_x = [&](const PaintResult& p) {
@@ -111,12 +122,12 @@ TEST_P(SurfacePaint, StripesOnAPlaneComeBackAsATranslatedCopy) {
         const Vec3 d = p.mesh.positions[w] - p.mesh.positions[v];
         if (std::abs(d.x - 1.0 / 16.0) > 1e-9 || std::abs(d.y) > 1e-9) continue;
         ++pairs;
-        same += (colour(p, v).x > colour(p, v).z) == (colour(p, w).x > colour(p, w).z);
+        same += (colour_of(p, v).x > colour_of(p, v).z) == (colour_of(p, w).x > colour_of(p, w).z);
       }
     return static_cast<double>(same) / static_cast<double>(pairs);
   };
   EXPECT_NEAR(same_along_x(painted), 0.75, 0.05);
-  const PaintResult turned = paint_surface(plane, image, along(plane, Vec3(0, 1, 0)), options, device());
+  const PaintResult turned = paint_stripes(plane, Vec3(0, 1, 0), device());
   EXPECT_GT(same_along_x(turned), 0.95);
 }
 
@@ -125,22 +136,12 @@ TEST_P(SurfacePaint, ABaseDenserThanTheSampleReadsAVertexACellAndStillCopies) {
   // holds about 600 of them, and reading all would cost that much per candidate. It may read one
   // per half-pixel cell, at most 15 x 15, and the stripes still come back as one translated copy.
   const TriMesh plane = test::flat_grid(160, 40, 1.0 / 64.0, 0.0);
-  PaintOptions options;
-  options.pixels_per_unit = 16.0;
-  const ColourImage image = stripes();
-  const PaintResult painted = paint_surface(plane, image, along(plane, Vec3(1, 0, 0)), options, device());
+  const PaintResult painted = paint_stripes(plane, Vec3(1, 0, 0), device());
   ASSERT_EQ(painted.mesh.num_vertices(), plane.num_vertices());
   ASSERT_GT(painted.visits, 0u);
   EXPECT_LE(static_cast<double>(painted.neighbours) / static_cast<double>(painted.visits), 15.0 * 15.0);
   EXPECT_GT(static_cast<double>(painted.neighbours) / static_cast<double>(painted.visits), 50.0);
-  const double phase = painted.source[0].x - painted.mesh.positions[0].x * options.pixels_per_unit;
-  size_t close = 0;
-  for (size_t v = 0; v < painted.mesh.num_vertices(); ++v) {
-    const auto& c = painted.mesh.colors[v];
-    const glm::dvec3 expected = image.sample({painted.mesh.positions[v].x * options.pixels_per_unit + phase, 0.5});
-    close += glm::length(glm::dvec3(c[0], c[1], c[2]) / 255.0 - expected) < 1.0 / 255.0;
-  }
-  EXPECT_GT(static_cast<double>(close) / static_cast<double>(painted.mesh.num_vertices()), 0.99);
+  EXPECT_GT(share_of_one_translated_copy(painted, stripes(), kStripePixelsPerUnit), 0.99);
 }
 
 TEST_P(SurfacePaint, PaintsAlongSynthsFieldWhateverTheRefinement) {
