@@ -1,7 +1,5 @@
 #include "image_synthesis_inputs.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -28,11 +26,7 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   ImageSynthesisInputs in;
   in.base = prepare_base(read_mesh(base), base);
   if (!image.empty()) in.sample = read_colour_image(image);
-  if (!image.empty() && sample_width > 0) {
-    const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(in.sample.height) * sample_width /
-                                                                in.sample.width)));
-    in.sample = shrunk(in.sample, sample_width, height);
-  }
+  if (!image.empty() && sample_width > 0) in.sample = shrunk_to_width(in.sample, sample_width);
   if (!field.empty()) in.constraints = read_field_file(field, in.base);
   in.diagonal = glm::length(bounding_box(in.base.positions).extent());
   in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * in.diagonal);

@@ -337,10 +337,7 @@ ColourImage sample_image(const py::array_t<double, py::array::c_style | py::arra
       throw InputError(std::string(what) + ": image values must lie in [0, 1]", ErrorKind::invalid_option);
     sample.rgb.push_back(c);
   }
-  if (sample_width <= 0) return sample;
-  const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(sample.height) * sample_width /
-                                                              sample.width)));
-  return shrunk(sample, sample_width, height);
+  return sample_width > 0 ? shrunk_to_width(sample, sample_width) : sample;
 }
 
 // Sample pixels per base unit: given, or the sample's width `scale` x the base's diagonal.

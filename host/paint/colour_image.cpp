@@ -133,4 +133,9 @@ ColourImage shrunk(const ColourImage& image, int width, int height) {
   return out;
 }
 
+ColourImage shrunk_to_width(const ColourImage& image, int width) {
+  const double height = static_cast<double>(image.height) * width / std::max(image.width, 1);
+  return shrunk(image, width, std::max(1, static_cast<int>(std::lround(height))));
+}
+
 }  // namespace meshquilt

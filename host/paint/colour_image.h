@@ -35,6 +35,10 @@ ColourImage halved(const ColourImage& image);
 //! \throw InputError(invalid_option) naming {sample_width} for a size under 1 or over the image's.
 ColourImage shrunk(const ColourImage& image, int width, int height);
 
+//! shrunk to `width` pixels across, the height rounded to keep the aspect (at least a pixel):
+//! `--sample-width`.
+ColourImage shrunk_to_width(const ColourImage& image, int width);
+
 //! Reads a PNG (any colour type, through libpng; alpha dropped) or a Netpbm file (PPM in
 //! colour, PGM and PBM as grey).
 //! \throw IoError(file_unreadable) "FILE: problem" for a missing, unreadable or corrupt file;

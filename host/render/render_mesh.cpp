@@ -125,7 +125,7 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
   validate_render_options(options);
   if (mesh.num_faces() == 0) throw InputError("render: the mesh has no faces");
   if (options.up != 2) {
-    // A cyclic turn of the axes carries the up axis to z and keeps the mesh right-handed: for
+    // A rotation carries the up axis to z (a quarter turn about x for y, a cyclic turn for x): for
     // y up, the model's front (+z) comes to face the front view's camera (-y).
     TriMesh turned = mesh;
     for (Vec3& p : turned.positions) p = options.up == 1 ? Vec3(p.x, -p.z, p.y) : Vec3(p.y, p.z, p.x);
