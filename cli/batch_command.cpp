@@ -1,4 +1,4 @@
-// `meshquilt batch`: runs a manifest of synth jobs (sharded, resumable) or reports on it.
+// `meshquilt batch`: runs a manifest of synth, paint and relief jobs (sharded, resumable) or reports on it.
 #include <iostream>
 #include <memory>
 #include <string>
@@ -62,7 +62,7 @@ void run_batch_command(const BatchArgs& args) {
 
 void add_batch_command(CLI::App& app) {
   auto args = std::make_shared<BatchArgs>();
-  CLI::App* cmd = app.add_subcommand("batch", "Run a manifest of synth jobs (sharded, resumable) or report on it");
+  CLI::App* cmd = app.add_subcommand("batch", "Run a manifest of synth, paint and relief jobs (sharded, resumable) or report on it");
   cmd->add_option("manifest", args->manifest, "jobs as JSON lines, or a .json array; see docs/cli.md")->required();
   cmd->add_option("--shard", args->shard,
                   "run jobs whose index is I modulo N (I/N); default: from a Slurm array task's variables, else 0/1");

@@ -11,6 +11,8 @@
 
 #include "core/error.h"
 #include "exit_codes.h"
+#include "paint_options.h"
+#include "synth_options.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -141,12 +143,30 @@ std::vector<std::string> option_list(const std::filesystem::path& file, int line
   return list;
 }
 
-// Parses `options` with a fresh CLI::App carrying synth's own options.
-SynthArgs parse_synth_options(const std::filesystem::path& file, int line, const std::vector<std::string>& options) {
-  SynthArgs args;
-  CLI::App app{"synth"};
-  add_synth_options(&app, args);
-  std::vector<std::string> reversed(options.rbegin(), options.rend());  // CLI11 consumes from the back
+// The commands a job may run: each parses its options with a fresh CLI::App carrying the
+// command's own registration and names the files they read and write.
+struct JobFiles {
+  std::vector<std::string> inputs, outputs;
+};
+
+template <typename Args>
+JobFiles parse_with(const std::filesystem::path& file, int line, const std::string& command,
+                    const std::vector<std::string>& options, const std::string& output,
+                    void (*add)(CLI::App*, Args&), std::vector<std::string> (*inputs)(const Args&),
+                    std::vector<std::string> (*outputs)(const Args&)) {
+  Args args;
+  CLI::App app{command};
+  add(&app, args);
+  // The output is the job's; given here as well, it passes the parser's own check of required
+  // options and is refused below.
+  std::vector<std::string> list = options;
+  const bool output_given = std::find_if(list.begin(), list.end(), [](const std::string& a) {
+                              return a == "-o" || a == "--output" || a.rfind("--output=", 0) == 0;
+                            }) != list.end();
+  if (output_given) fail(file, line, "give the output as the job's \"output\", not as an option");
+  list.push_back("--output");
+  list.push_back(output);
+  std::vector<std::string> reversed(list.rbegin(), list.rend());  // CLI11 consumes from the back
   try {
     app.parse(reversed);
   } catch (const CLI::ParseError& e) {
@@ -154,29 +174,45 @@ SynthArgs parse_synth_options(const std::filesystem::path& file, int line, const
   } catch (const Error& e) {
     fail(file, line, message(e));
   }
-  if (app.get_option("--output")->count() > 0)
-    fail(file, line, "give the output as the job's \"output\", not as an option");
   if (app.get_option("--progress")->count() > 0) fail(file, line, "--progress is set by batch, not per job");
-  return args;
+  return {inputs(args), outputs(args)};
+}
+
+JobFiles parse_job_options(const std::filesystem::path& file, int line, const std::string& command,
+                           const std::vector<std::string>& options, const std::string& output) {
+  if (command == "synth")
+    return parse_with<SynthArgs>(file, line, command, options, output, add_synth_options, synth_input_files,
+                                 synth_output_files);
+  if (command == "paint")
+    return parse_with<PaintArgs>(file, line, command, options, output, add_paint_options, paint_input_files,
+                                 paint_output_files);
+  if (command == "relief")
+    return parse_with<ReliefArgs>(file, line, command, options, output, add_relief_options, relief_input_files,
+                                  relief_output_files);
+  fail(file, line, "\"command\": expected synth, paint or relief, got '" + command + "'");
 }
 
 BatchJob make_job(const Manifest& manifest, size_t index, const RawJob& raw) {
   const std::filesystem::path& file = manifest.file;
   if (!raw.value.is_object()) fail(file, raw.line, "a job must be an object {\"output\": ..., \"options\": ...}");
   for (const auto& [key, value] : raw.value.items())
-    if (key != "output" && key != "options")
-      fail(file, raw.line, "unknown key '" + key + "' (expected \"output\" and \"options\")");
+    if (key != "command" && key != "output" && key != "options")
+      fail(file, raw.line, "unknown key '" + key + "' (expected \"command\", \"output\" and \"options\")");
+  if (raw.value.contains("command") && !raw.value["command"].is_string())
+    fail(file, raw.line, "\"command\": expected synth, paint or relief");
   if (!raw.value.contains("output") || !raw.value["output"].is_string() ||
       raw.value["output"].get<std::string>().empty())
     fail(file, raw.line, "\"output\": expected the output mesh's path");
   BatchJob job;
   job.index = index;
   job.line = raw.line;
+  job.command = raw.value.value("command", "synth");
   job.output = raw.value["output"].get<std::string>();
   job.options = option_list(file, raw.line, raw.value.value("options", json()));
-  job.args = parse_synth_options(file, raw.line, job.options);
-  job.args.output = job.output;
-  for (const std::string& input : synth_input_files(job.args)) {
+  JobFiles files = parse_job_options(file, raw.line, job.command, job.options, job.output);
+  job.inputs = std::move(files.inputs);
+  job.outputs = std::move(files.outputs);
+  for (const std::string& input : job.inputs) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(manifest.resolve(input), error)) {
       job.problem = input + ": cannot open: " + std::strerror(ENOENT);
@@ -188,7 +224,7 @@ BatchJob make_job(const Manifest& manifest, size_t index, const RawJob& raw) {
 
 }  // namespace
 
-std::vector<std::string> BatchJob::synth_arguments() const {
+std::vector<std::string> BatchJob::arguments() const {
   std::vector<std::string> arguments = options;
   arguments.push_back("-o");
   arguments.push_back(output);
@@ -220,7 +256,7 @@ Manifest read_manifest(const std::filesystem::path& file) {
   std::map<std::filesystem::path, int> writers;  // every output file -> the line of its job
   for (size_t i = 0; i < raw.size(); ++i) {
     BatchJob job = make_job(manifest, i, raw[i]);
-    for (const std::string& output : synth_output_files(job.args)) {
+    for (const std::string& output : job.outputs) {
       const auto [it, fresh] = writers.emplace(manifest.resolve(output), job.line);
       if (!fresh) fail(file, job.line, output + " is also written by the job on line " + std::to_string(it->second));
     }

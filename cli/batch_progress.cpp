@@ -45,8 +45,11 @@ void BatchProgress::succeeded(const BatchJob& job, double seconds, const json& s
                 {"status", "done"}, {"seconds", seconds}, {"summary", summary}});
   } else {
     clear_bar();
-    std::printf("%s %s: %lld faces, %lld elements in %.1f s\n", manifest_.where(job).c_str(), job.output.c_str(),
-                summary.value("faces", 0LL), summary.value("elements", 0LL), seconds);
+    // Synth counts elements; paint and relief colour or raise vertices.
+    const bool elements = summary.contains("elements");
+    std::printf("%s %s: %lld faces, %lld %s in %.1f s\n", manifest_.where(job).c_str(), job.output.c_str(),
+                summary.value("faces", 0LL), summary.value(elements ? "elements" : "vertices", 0LL),
+                elements ? "elements" : "vertices", seconds);
     std::fflush(stdout);
   }
   draw(true);

@@ -76,7 +76,8 @@ json base_record(const BatchJob& job) {
           {"job", job.index},
           {"line", job.line},
           {"output", job.output},
-          {"arguments", job.synth_arguments()},
+          {"command", job.command},
+          {"arguments", job.arguments()},
           {"host", host_name()},
           {"finished_at", now_utc()}};
 }
@@ -117,8 +118,8 @@ const char* job_state_name(JobState state) {
 void record_completion(const Manifest& manifest, const BatchJob& job, const json& summary, double seconds) {
   const JobFiles files = job_files(manifest, job);
   json record = base_record(job);
-  record["inputs"] = hashes(manifest, synth_input_files(job.args));
-  record["outputs"] = hashes(manifest, synth_output_files(job.args));
+  record["inputs"] = hashes(manifest, job.inputs);
+  record["outputs"] = hashes(manifest, job.outputs);
   record["seconds"] = seconds;
   record["summary"] = summary;
   write_text_atomic(files.done, record.dump(2) + "\n");
@@ -148,9 +149,9 @@ bool completion_matches(const Manifest& manifest, const BatchJob& job, std::stri
   if (!record || !record->is_object()) return say("no completion record");
   if (record->value("meshquilt", "") != meshquilt_version())
     return say("made by meshquilt " + record->value("meshquilt", "?") + ", this is " + meshquilt_version());
-  if ((*record)["arguments"] != json(job.synth_arguments())) return say("options changed");
-  for (const auto& [group, files] : {std::pair{"inputs", synth_input_files(job.args)},
-                                     std::pair{"outputs", synth_output_files(job.args)}}) {
+  if (record->value("command", "synth") != job.command) return say("command changed");
+  if ((*record)["arguments"] != json(job.arguments())) return say("options changed");
+  for (const auto& [group, files] : {std::pair{"inputs", job.inputs}, std::pair{"outputs", job.outputs}}) {
     const json& recorded = (*record)[group];
     if (!recorded.is_object() || recorded.size() != files.size()) return say(std::string(group) + " changed");
     for (const std::string& file : files) {
@@ -182,7 +183,8 @@ JobStatus job_status(const Manifest& manifest, const BatchJob& job) {
     return status;
   }
   const std::optional<json> failure = read_json(files.failed);
-  if (failure && failure->is_object() && (*failure)["arguments"] == json(job.synth_arguments())) {
+  if (failure && failure->is_object() && failure->value("command", "synth") == job.command &&
+      (*failure)["arguments"] == json(job.arguments())) {
     status.state = JobState::failed;
     status.record = *failure;
     status.detail = failure->value("error", "");

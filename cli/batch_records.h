@@ -1,6 +1,6 @@
 #pragma once
 //! What a batch remembers about each job, in `MANIFEST.batch/` beside the manifest: a completion
-//! record (KEY.done.json: meshquilt version, synth arguments, SHA-256 of the inputs and outputs,
+//! record (KEY.done.json: meshquilt version, the command and its arguments, SHA-256 of the inputs and outputs,
 //! the stats summary), a failure record (KEY.failed.json: exit code and error line), the job's
 //! stderr (KEY.log) and a lock file (KEY.lock) that the running job holds with flock. KEY is
 //! the output's file name plus a hash of its full path. Records are written atomically, after
@@ -41,7 +41,7 @@ struct JobStatus {
 };
 
 //! Writes KEY.done.json after a successful run (hashing inputs and outputs now) and removes the
-//! failure record. `summary` is synth's JSON summary. \throw IoError naming the file.
+//! failure record. `summary` is the command's JSON summary. \throw IoError naming the file.
 void record_completion(const Manifest& manifest, const BatchJob& job, const nlohmann::json& summary, double seconds);
 
 //! Writes KEY.failed.json and removes any completion record. \throw IoError naming the file.

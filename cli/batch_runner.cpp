@@ -38,7 +38,7 @@ struct RunningJob {
   const BatchJob* job = nullptr;
   JobLock lock;
   pid_t pid = -1;
-  int output_fd = -1;   // the child's stdout: synth's JSON progress lines
+  int output_fd = -1;   // the child's stdout: its command's JSON progress lines
   size_t slot = 0;      // which CPU subset it runs on
   std::string pending;  // a partial line read from output_fd
   double fraction = 0.0;
@@ -67,7 +67,8 @@ std::vector<int> allowed_cpus() {
 // Removes temporaries that a killed writer of `output` left (".NAME.PID.N.tmp"). Only called
 // while holding the job's lock, when no writer of this output can be alive.
 void remove_stale_temporaries(const std::filesystem::path& output) {
-  const std::string prefix = "." + output.filename().string() + ".";
+  std::string prefix = ".";
+  prefix.append(output.filename().string()).append(".");
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(output.parent_path(), error)) {
     const std::string name = entry.path().filename().string();
@@ -77,7 +78,7 @@ void remove_stale_temporaries(const std::filesystem::path& output) {
   }
 }
 
-// The error of a failed job: the last line synth wrote to stderr, without the "meshquilt: ".
+// The error of a failed job: the last line its command wrote to stderr, without the "meshquilt: ".
 std::string last_error_line(const std::filesystem::path& log) {
   std::ifstream in(log);
   std::string line, last;
@@ -128,7 +129,7 @@ class Runner {
       return false;
     }
     forget_completion(manifest_, job);
-    for (const std::string& output : synth_output_files(job.args)) {
+    for (const std::string& output : job.outputs) {
       const std::filesystem::path path = manifest_.resolve(output);
       std::error_code error;
       std::filesystem::create_directories(path.parent_path(), error);
@@ -175,8 +176,8 @@ class Runner {
 
  private:
   void spawn(const BatchJob& job, JobLock lock) {
-    std::vector<std::string> arguments{executable_, "synth"};
-    for (const std::string& a : job.synth_arguments()) arguments.push_back(a);
+    std::vector<std::string> arguments{executable_, job.command};
+    for (const std::string& a : job.arguments()) arguments.push_back(a);
     arguments.push_back("--progress");
     arguments.push_back("json");
     std::vector<char*> argv;
@@ -212,7 +213,7 @@ class Runner {
       [[maybe_unused]] const int kept_lock = ::dup(lock.fd());  // without O_CLOEXEC: the lock lives as long as the job
       ::sched_setaffinity(0, sizeof cpus, &cpus);
       if (::chdir(folder.c_str()) == 0) ::execve(argv[0], argv.data(), envp.data());
-      static const char message[] = "meshquilt: cannot start meshquilt synth\n";
+      static const char message[] = "meshquilt: cannot start meshquilt\n";
       [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message, sizeof message - 1);
       ::_exit(127);
     }
@@ -273,7 +274,10 @@ class Runner {
     }
     std::string error = last_error_line(files.log);
     if (signal_number != 0) error = "killed by signal " + std::to_string(signal_number) + (error.empty() ? "" : ": " + error);
-    if (error.empty()) error = "synth ended with exit code " + std::to_string(code);
+    if (error.empty()) {
+      error = job.command;
+      error.append(" ended with exit code ").append(std::to_string(code));
+    }
     record_failure(manifest_, job, code, signal_number, error, seconds);
     progress_.failed(job, seconds, error);
     ++outcome_.failed;

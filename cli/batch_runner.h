@@ -1,10 +1,10 @@
 #pragma once
-//! Runs the jobs of one shard of a manifest, each as a child `meshquilt synth` process.
+//! Runs the jobs of one shard of a manifest, each as a child `meshquilt synth|paint|relief` process.
 //!
-//! Why child processes rather than threads: synth keeps process-wide state (the interrupt token,
+//! Why child processes rather than threads: the commands keep process-wide state (the interrupt token,
 //! the memory budget of --max-memory, the list of pending temporary files), a job that runs out
 //! of memory or crashes takes only itself down, and the output is byte-identical to a direct
-//! `synth` run by construction. Each child gets PR_SET_PDEATHSIG(SIGKILL), so a batch that is
+//! run of the command by construction. Each child gets PR_SET_PDEATHSIG(SIGKILL), so a batch that is
 //! killed (SIGKILL, a lost Slurm step) takes its jobs with it, and it inherits the job's flock,
 //! so no rerun can start the same job while any writer of it is alive.
 

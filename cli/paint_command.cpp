@@ -16,6 +16,7 @@
 #include "mesh/mesh_io.h"
 #include "paint/colour_atlas.h"
 #include "paint/surface_paint.h"
+#include "paint_options.h"
 #include "progress.h"
 #include "render/png_encoding.h"
 #include "signals.h"
@@ -23,14 +24,6 @@
 namespace meshquilt::cli {
 namespace {
 
-struct PaintArgs {
-  std::string base, image, output, field, stats, write_field, backend = "auto", progress = "auto";
-  double scale = 0.25;
-  double pixels_per_unit = 0.0;
-  int sample_width = 0;  // 0: the image as it is
-  int atlas = 0;
-  PaintOptions options;
-};
 
 void run_paint(PaintArgs& args) {
   const auto start = std::chrono::steady_clock::now();
@@ -98,31 +91,7 @@ void add_paint_command(CLI::App& app) {
   auto args = std::make_shared<PaintArgs>();
   CLI::App* cmd = app.add_subcommand(
       "paint", "Colour a base from an image sample, swept along synth's guidance field (Turk 2001)");
-  cmd->add_option("--base", args->base, "base mesh (.obj .ply .off .stl)")->required();
-  cmd->add_option("--image", args->image, "the sample: PNG, or PPM/PGM/PBM")->required();
-  cmd->add_option("-o,--output", args->output, "the base refined, with vertex colours (.ply .glb .obj .off .stl)")
-      ->required();
-  cmd->add_option("--scale", args->scale, "the sample's width over the base's bounding-box diagonal")
-      ->capture_default_str();
-  cmd->add_option("--pixels-per-unit", args->pixels_per_unit, "sample pixels per base unit (instead of --scale)");
-  cmd->add_option("--sample-width", args->sample_width,
-                  "shrink the image to this many pixels across first (a box filter, aspect kept): a large photo "
-                  "at a size the base can hold");
-  cmd->add_option("--field", args->field, "guidance field file, as synth's --field");
-  cmd->add_option("--window", args->options.window, "neighbourhood width in pixels, odd, 3..21")->capture_default_str();
-  cmd->add_option("--passes", args->options.passes, "the sweep, then passes over whole neighbourhoods")
-      ->capture_default_str();
-  cmd->add_option("--coherence", args->options.coherence,
-                  "weight against a sample position few neighbours propose, 0..100")
-      ->capture_default_str();
-  cmd->add_option("--seed", args->options.seed, "seed of every random choice")->capture_default_str();
-  cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
-  cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();
-  cmd->add_option("--atlas", args->atlas,
-                  "bake the colours into an N x N texture over the base's charts: writes the base with UVs (.glb only)");
-  cmd->add_option("--stats", args->stats, "write figures as JSON");
-  cmd->add_option("--write-field", args->write_field,
-                  "write the field each output vertex was painted along, one 'x y z' line per vertex");
+  add_paint_options(cmd, *args);
   cmd->callback([args] { run_paint(*args); });
 }
 

@@ -23,24 +23,13 @@
 #include "mesh/measures.h"
 #include "paint/detail_extraction.h"
 #include "paint/surface_relief.h"
+#include "paint_options.h"
 #include "progress.h"
 #include "signals.h"
 
 namespace meshquilt::cli {
 namespace {
 
-struct ReliefArgs {
-  std::string base, image, output, field, stats, write_sample, write_field, backend = "auto", progress = "auto";
-  double scale = 0.25;
-  double pixels_per_unit = 0.0;
-  int sample_width = 0;  // 0: the image as it is
-  ReliefOptions options;
-  // --from: the model whose detail is the sample.
-  std::string model;
-  std::vector<double> region;  // x, y, z, radius in model units
-  double smoothing = 0.0;      // model units; 0: 0.01 of its bounding-box diagonal
-  int pixels = 32;
-};
 
 // The model's detail over its region as the sample, sized as an image sample is (--scale or
 // --pixels-per-unit), its heights scaled as its widths are unless --height is given.
@@ -128,39 +117,8 @@ void add_relief_command(CLI::App& app) {
   auto args = std::make_shared<ReliefArgs>();
   CLI::App* cmd = app.add_subcommand(
       "relief", "Raise a relief over a base from a height image (white high), synthesized as paint does");
-  cmd->add_option("--base", args->base, "base mesh (.obj .ply .off .stl)")->required();
-  CLI::Option* image = cmd->add_option("--image", args->image, "heights: PGM/PBM/PPM or PNG, white high");
-  cmd->add_option("--from", args->model, "a model whose detail (it minus its smoothed self) is the sample")
-      ->excludes(image);
-  CLI::Option* height = cmd->add_option(
-      "--height", args->options.height,
-      "the displacement of white, in base units (with --from: the detail's own, scaled as its width is)");
-  cmd->add_option("--region", args->region, "with --from: X,Y,Z,RADIUS, the ball of the model sampled "
-                                            "(default: where its detail varies most, radius 0.1 of its diagonal)")
-      ->delimiter(',')
-      ->expected(4);
-  cmd->add_option("--smoothing", args->smoothing,
-                  "with --from: the smoothing length, model units (default: 0.01 of its diagonal)");
-  cmd->add_option("--pixels", args->pixels, "with --from: the sample's pixels a side")->capture_default_str();
-  cmd->add_option("-o,--output", args->output, "the base refined and displaced (.ply .glb .obj .off .stl)")->required();
-  cmd->add_option("--scale", args->scale, "the image's width over the base's bounding-box diagonal")
-      ->capture_default_str();
-  cmd->add_option("--pixels-per-unit", args->pixels_per_unit, "image pixels per base unit (instead of --scale)");
-  cmd->add_option("--sample-width", args->sample_width,
-                  "with --image: shrink it to this many pixels across first (a box filter, aspect kept)");
-  cmd->add_option("--field", args->field, "guidance field file, as synth's --field");
-  cmd->add_option("--clearance", args->options.clearance,
-                  "share of the room along a normal (to the surface met, or the radius of a hollow) a height may take")
-      ->capture_default_str();
-  cmd->add_option("--window", args->options.paint.window, "neighbourhood width in pixels, odd, 3..21")
-      ->capture_default_str();
-  cmd->add_option("--seed", args->options.paint.seed, "seed of every random choice")->capture_default_str();
-  cmd->add_option("--backend", args->backend, "auto|vulkan|cpu: where neighbourhoods are scored")->capture_default_str();
-  cmd->add_option("--progress", args->progress, "auto|json|none")->capture_default_str();
-  cmd->add_option("--stats", args->stats, "write figures as JSON");
-  cmd->add_option("--write-sample", args->write_sample, "write the height sample used (grey, 16-bit PGM)");
-  cmd->add_option("--write-field", args->write_field,
-                  "write the field each output vertex was synthesized along, one 'x y z' line per vertex");
+  add_relief_options(cmd, *args);
+  CLI::Option* height = cmd->get_option("--height");
   cmd->callback([args, height] { run_relief(*args, height->count() > 0); });
 }
 

@@ -1,5 +1,5 @@
 // `meshquilt batch` end to end: a manifest of small planar jobs sharded across three processes
-// matches direct `synth` runs byte for byte; a batch killed with SIGKILL in the middle of a job
+// matches direct `synth` runs byte for byte, as paint and relief jobs match theirs; a batch killed with SIGKILL in the middle of a job
 // resumes without redoing finished jobs; bad manifests get one line naming the manifest line;
 // Slurm array variables pick the shard.
 #include <gtest/gtest.h>
@@ -324,6 +324,17 @@ INSTANTIATE_TEST_SUITE_P(
                     "[\n  {\"output\": \"a.ply\", \"options\": [\"--seed\", 1]},\n\n"
                     "  {\"output\": \"b.ply\",\n   \"options\": [\"--nope\"]}\n]\n",
                     "json_unknown_option.json:4: The following argument was not expected: --nope"},
+        BadManifest{"unknown_command",
+                    "{\"output\": \"a.ply\", \"options\": [\"--seed\", 1]}\n"
+                    "{\"command\": \"colour\", \"output\": \"b.ply\"}\n",
+                    "unknown_command.jsonl:2: \"command\": expected synth, paint or relief, got 'colour'"},
+        BadManifest{"paint_without_image",
+                    "{\"command\": \"paint\", \"output\": \"a.ply\", \"options\": {\"base\": \"b.off\"}}\n",
+                    "paint_without_image.jsonl:1: --image is required"},
+        BadManifest{"relief_unknown_option",
+                    "{\"command\": \"relief\", \"output\": \"a.ply\", \"options\": [\"--base\", \"b.off\", "
+                    "\"--plane\", \"1x1\"]}\n",
+                    "relief_unknown_option.jsonl:1: The following arguments were not expected: 1x1 --plane"},
         BadManifest{"json_duplicate", "{\"jobs\": [\n{\"output\": \"a.ply\"},\n{\"output\": \"a.ply\"}]}\n",
                     "json_duplicate.json:3: a.ply is also written by the job on line 2"}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -346,6 +357,52 @@ TEST(BatchManifest, JobWithMissingSwatchIsRecordedAndTheOthersRun) {
   EXPECT_EQ(count_of(report.output, ",done,"), 2u) << report.output;
   EXPECT_NE(report.output.find("1,2,out/b.ply,failed,"), std::string::npos) << report.output;
   EXPECT_NE(report.output.find("1 of 3 jobs not done (1 failed"), std::string::npos) << report.output;
+}
+
+// Paint and relief jobs run beside synth's: each output is byte-identical to a direct run of its
+// command, a rerun skips them all, and a changed sample redoes only the job that reads it.
+TEST(BatchCommands, PaintAndReliefJobsMatchDirectRuns) {
+  const fs::path dir = scratch_dir("batch_paint_relief");
+  fs::copy_file(fs::path(MESHQUILT_SOURCE_DIR) / "data/sphere.off", dir / "sphere.off");
+  std::string ppm = "P3\n8 8\n255\n", pgm = "P2\n8 8\n255\n";
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      ppm += std::to_string(32 * x) + " " + std::to_string(255 - 32 * y) + " " + std::to_string((x * y) % 7 * 36) + "\n";
+      pgm += std::to_string(((x / 2 + y / 2) % 2) * 255) + "\n";
+    }
+  write_file(dir / "sample.ppm", ppm);
+  write_file(dir / "heights.pgm", pgm);
+  write_file(dir / "jobs.jsonl",
+             "{\"command\": \"paint\", \"output\": \"out/painted.ply\", \"options\": {\"base\": \"sphere.off\", "
+             "\"image\": \"sample.ppm\", \"scale\": 0.5, \"backend\": \"cpu\", \"stats\": \"out/painted.json\"}}\n"
+             "{\"command\": \"relief\", \"output\": \"out/raised.ply\", \"options\": [\"--base\", \"sphere.off\", "
+             "\"--image\", \"heights.pgm\", \"--height\", 0.05, \"--scale\", 0.5, \"--backend\", \"cpu\"]}\n"
+             "{\"command\": \"synth\", \"output\": \"out/chain.ply\", \"options\": [\"--plane\", \"1x1\", "
+             "\"--max-patches\", 2, \"--backend\", \"cpu\"]}\n");
+  const CliResult r = meshquilt_in(dir, "batch jobs.jsonl --progress none");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("jobs.jsonl:1 out/painted.ply: 1280 faces, 642 vertices"), std::string::npos) << r.output;
+
+  ASSERT_EQ(meshquilt_in(dir, "paint --base sphere.off --image sample.ppm --scale 0.5 --backend cpu --progress none "
+                              "-o direct_painted.ply").exit_code, 0);
+  ASSERT_EQ(meshquilt_in(dir, "relief --base sphere.off --image heights.pgm --height 0.05 --scale 0.5 --backend cpu "
+                              "--progress none -o direct_raised.ply").exit_code, 0);
+  EXPECT_FALSE(read_file(dir / "out/painted.ply").empty());
+  EXPECT_TRUE(read_file(dir / "out/painted.ply") == read_file(dir / "direct_painted.ply")) << "paint differs";
+  EXPECT_TRUE(read_file(dir / "out/raised.ply") == read_file(dir / "direct_raised.ply")) << "relief differs";
+  EXPECT_NE(read_file(dir / "out/painted.json").find("\"pixels_per_unit\""), std::string::npos);
+
+  const CliResult report = meshquilt_in(dir, "batch jobs.jsonl --report --format csv");
+  EXPECT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_EQ(count_of(report.output, ",done,"), 3u) << report.output;
+  EXPECT_NE(meshquilt_in(dir, "batch jobs.jsonl --progress none").output.find("0 done, 3 already done"),
+            std::string::npos);
+
+  write_file(dir / "sample.ppm", "P3\n8 8\n255\n1" + ppm.substr(12));  // the first red value, 0, made 1
+  const CliResult again = meshquilt_in(dir, "batch jobs.jsonl --progress none");
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("1 done, 2 already done"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("out/painted.ply"), std::string::npos) << again.output;
 }
 
 TEST(BatchShard, SlurmArrayVariablesPickTheShard) {
