@@ -80,7 +80,8 @@ ReportTotals write_report(const Manifest& manifest, ReportFormat format, std::os
   if (format == ReportFormat::json) {
     json jobs = json::array();
     for (const Row& row : rows) {
-      json entry = {{"job", row.job->index}, {"line", row.job->line}, {"output", row.job->output},
+      json entry = {{"job", row.job->index},     {"line", row.job->line},
+                    {"command", row.job->command}, {"output", row.job->output},
                     {"status", job_state_name(row.status.state)}, {"seconds", row.seconds}};
       entry.update(row.figures);
       if (!row.status.detail.empty()) entry["detail"] = row.status.detail;

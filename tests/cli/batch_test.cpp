@@ -395,6 +395,8 @@ TEST(BatchCommands, PaintAndReliefJobsMatchDirectRuns) {
   const CliResult report = meshquilt_in(dir, "batch jobs.jsonl --report --format csv");
   EXPECT_EQ(report.exit_code, 0) << report.output;
   EXPECT_EQ(count_of(report.output, ",done,"), 3u) << report.output;
+  const CliResult json_report = meshquilt_in(dir, "batch jobs.jsonl --report --format json");
+  EXPECT_NE(json_report.output.find("\"command\": \"relief\""), std::string::npos) << json_report.output;
   EXPECT_NE(meshquilt_in(dir, "batch jobs.jsonl --progress none").output.find("0 done, 3 already done"),
             std::string::npos);
 
