@@ -157,8 +157,8 @@ JobFiles parse_with(const std::filesystem::path& file, int line, const std::stri
   Args args;
   CLI::App app{command};
   add(&app, args);
-  // The output is the job's; given here as well, it passes the parser's own check of required
-  // options and is refused below.
+  // The job's output goes in as --output, so that commands requiring one parse; an output among
+  // the options is refused.
   std::vector<std::string> list = options;
   const bool output_given = std::find_if(list.begin(), list.end(), [](const std::string& a) {
                               return a == "-o" || a == "--output" || a.rfind("--output=", 0) == 0;
