@@ -24,7 +24,6 @@
 namespace meshquilt::cli {
 namespace {
 
-
 void run_paint(PaintArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   std::string extension = std::filesystem::path(args.output).extension().string();

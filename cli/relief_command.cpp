@@ -30,7 +30,6 @@
 namespace meshquilt::cli {
 namespace {
 
-
 // The model's detail over its region as the sample, sized as an image sample is (--scale or
 // --pixels-per-unit), its heights scaled as its widths are unless --height is given.
 nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, bool height_given, bool ppu_given) {
