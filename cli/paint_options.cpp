@@ -1,5 +1,7 @@
 #include "paint_options.h"
 
+#include "core/error.h"
+
 namespace meshquilt::cli {
 namespace {
 
@@ -45,8 +47,9 @@ void add_relief_options(CLI::App* cmd, ReliefArgs& args) {
   CLI::Option* image = cmd->add_option("--image", args.image, "heights: PGM/PBM/PPM or PNG, white high");
   cmd->add_option("--from", args.model, "a model whose detail (it minus its smoothed self) is the sample")
       ->excludes(image);
-  cmd->add_option("--height", args.options.height,
-                  "the displacement of white, in base units (with --from: the detail's own, scaled as its width is)");
+  CLI::Option* height = cmd->add_option(
+      "--height", args.options.height,
+      "the displacement of white, in base units (with --from: the detail's own, scaled as its width is)");
   cmd->add_option("--region", args.region, "with --from: X,Y,Z,RADIUS, the ball of the model sampled "
                                            "(default: where its detail varies most, radius 0.1 of its diagonal)")
       ->delimiter(',')
@@ -73,6 +76,13 @@ void add_relief_options(CLI::App* cmd, ReliefArgs& args) {
   cmd->add_option("--write-sample", args.write_sample, "write the height sample used (grey, 16-bit PGM)");
   cmd->add_option("--write-field", args.write_field,
                   "write the field each output vertex was synthesized along, one 'x y z' line per vertex");
+  // Checked at parse, so that a batch manifest's job is refused before any job runs.
+  cmd->parse_complete_callback([&args, height] {
+    if (args.image.empty() == args.model.empty())
+      throw InputError("relief: expected one of --image and --from", ErrorKind::invalid_option);
+    if (!args.image.empty() && height->count() == 0)
+      throw InputError("--height: required with --image", ErrorKind::invalid_option);
+  });
 }
 
 std::vector<std::string> paint_input_files(const PaintArgs& args) { return given({&args.base, &args.image, &args.field}); }

@@ -66,10 +66,6 @@ std::string grey_pgm(const ColourImage& image) {
 
 void run_relief(ReliefArgs& args, bool height_given) {
   const auto start = std::chrono::steady_clock::now();
-  if (args.image.empty() == args.model.empty())
-    throw InputError("relief: expected one of --image and --from", ErrorKind::invalid_option);
-  if (!args.image.empty() && !height_given)
-    throw InputError("--height: required with --image", ErrorKind::invalid_option);
   if (!args.write_sample.empty()) check_writable(args.write_sample);
   if (!args.write_field.empty()) check_writable(args.write_field);
   ImageSynthesisInputs in = read_image_synthesis_inputs(args.base, args.image, args.field, args.scale,

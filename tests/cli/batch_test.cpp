@@ -335,6 +335,13 @@ INSTANTIATE_TEST_SUITE_P(
                     "{\"command\": \"relief\", \"output\": \"a.ply\", \"options\": [\"--base\", \"b.off\", "
                     "\"--plane\", \"1x1\"]}\n",
                     "relief_unknown_option.jsonl:1: The following arguments were not expected: 1x1 --plane"},
+        BadManifest{"relief_image_without_height",
+                    "{\"command\": \"relief\", \"output\": \"a.ply\", \"options\": {\"base\": \"b.off\", "
+                    "\"image\": \"h.pgm\"}}\n",
+                    "relief_image_without_height.jsonl:1: --height: required with --image"},
+        BadManifest{"relief_without_sample",
+                    "{\"command\": \"relief\", \"output\": \"a.ply\", \"options\": {\"base\": \"b.off\"}}\n",
+                    "relief_without_sample.jsonl:1: relief: expected one of --image and --from"},
         BadManifest{"json_duplicate", "{\"jobs\": [\n{\"output\": \"a.ply\"},\n{\"output\": \"a.ply\"}]}\n",
                     "json_duplicate.json:3: a.ply is also written by the job on line 2"}),
     [](const auto& info) { return std::string(info.param.name); });
