@@ -14,12 +14,14 @@ With --heights-over, the mesh is a relief: its signal is read back from the geom
 relief_heights.py reads it, and its neighbourhoods are taken on the base under it.
 With --stripes, the sample's stripes run along its x axis: a plane fitted to the luma round each
 centre gives the stripes' direction, whose angle to the field is reported.
+With --reference, another colouring of the same mesh (field_stripes.py's best stripes for the
+field) is read over the same neighbourhoods, and the painted distance is reported over its.
 
 Prints a JSON summary; exits 1 when a ratio or the angle passes its bound.
 
 usage: paint_neighbourhoods.py --painted OUT.ply --field FIELD.txt --sample SAMPLE.ppm|.pgm
        --stats S.json [--heights-over BASE] [--centres N] [--seed S] [--stripes] [--max-loo-ratio R]
-       [--max-projection-ratio R] [--max-stripe-angle DEG]
+       [--max-projection-ratio R] [--max-stripe-angle DEG] [--reference REF.ply --max-reference-ratio R]
 """
 import argparse
 import json
@@ -191,6 +193,8 @@ def main():
     parser.add_argument("--max-loo-ratio", type=float)
     parser.add_argument("--max-projection-ratio", type=float)
     parser.add_argument("--max-stripe-angle", type=float)
+    parser.add_argument("--reference", help="another colouring of the painted mesh's vertices")
+    parser.add_argument("--max-reference-ratio", type=float)
     args = parser.parse_args()
 
     vertices, faces, colours = read_ply(args.painted)
@@ -246,9 +250,19 @@ def main():
         "leave_one_out": float(loo.mean()),
         "projection": float(projected.mean()),
     }
+    if args.reference:
+        reference_vertices, _, reference_colours = read_ply(args.reference)
+        if reference_colours is None or len(reference_vertices) != len(vertices):
+            sys.exit(args.reference + ": expected colours over the painted mesh's %d vertices" % len(vertices))
+        reference = best_distances(resampled(reference_colours / 255.0, neighbourhoods), windows)
+        summary["reference"] = float(reference.mean())
     summary["loo_ratio"] = summary["painted"] / max(summary["leave_one_out"], 1e-12)
     summary["projection_ratio"] = summary["painted"] / max(summary["projection"], 1e-12)
     failed = []
+    if args.reference:
+        summary["reference_ratio"] = summary["painted"] / max(summary["reference"], 1e-12)
+        if args.max_reference_ratio is not None and summary["reference_ratio"] > args.max_reference_ratio:
+            failed.append("reference_ratio")
     if args.max_loo_ratio is not None and summary["loo_ratio"] > args.max_loo_ratio:
         failed.append("loo_ratio")
     if args.max_projection_ratio is not None and summary["projection_ratio"] > args.max_projection_ratio:
