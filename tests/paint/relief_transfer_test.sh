@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # armadillo.off's detail raised over bunny.off: the heights, read back from the geometry by
 # relief_heights.py (numpy, apart from the synthesizer), must be distributed as the sample's grey
-# levels (two-sample KS <= 0.1), and the result closed with no face passing through another.
+# levels (two-sample KS <= 0.1) and their neighbourhoods within 1.5x the sample's leave-one-out
+# distance (paint_neighbourhoods.py), and the result closed with no face passing through another.
+# The heights as synthesized, before the geometry clamps and tilts them (paint over the same
+# sample at the same pitch, as relief synthesizes it), also meet half a planar projection's
+# distance; read back through the geometry they do not (decision 0048).
 # usage: relief_transfer_test.sh MESHQUILT SHARED_MESHES WORK_DIR
 set -euo pipefail
 meshquilt=$1 meshes=$2 work=$3
@@ -12,9 +16,18 @@ mkdir -p "$work"
 # --scale 0.1): raised along the base's smooth normals, 5% of the vertices are clamped to their
 # room and KS is 0.036; at the default --scale 0.25 (4.8%), 0.115.
 "$meshquilt" relief --base "$meshes/bunny.off" --from "$meshes/armadillo.off" --scale 0.1 \
-  --write-sample "$work/sample.pgm" --stats "$work/stats.json" -o "$work/relief.ply"
+  --write-sample "$work/sample.pgm" --write-field "$work/relief.field" --stats "$work/stats.json" \
+  -o "$work/relief.ply"
 "$python" "$(dirname "$0")/relief_heights.py" --base "$meshes/bunny.off" --relief "$work/relief.ply" \
   --sample "$work/sample.pgm" --stats "$work/stats.json" --max-ks 0.1
+"$python" "$(dirname "$0")/paint_neighbourhoods.py" --painted "$work/relief.ply" --field "$work/relief.field" \
+  --sample "$work/sample.pgm" --stats "$work/stats.json" --heights-over "$meshes/bunny.off" --max-loo-ratio 1.5
+pixels_per_unit=$("$python" -c 'import json, sys; print(repr(json.load(open(sys.argv[1]))["pixels_per_unit"]))' \
+  "$work/stats.json")
+"$meshquilt" paint --base "$meshes/bunny.off" --image "$work/sample.pgm" --pixels-per-unit "$pixels_per_unit" \
+  --progress none --stats "$work/painted.json" --write-field "$work/painted.field" -o "$work/painted.ply"
+"$python" "$(dirname "$0")/paint_neighbourhoods.py" --painted "$work/painted.ply" --field "$work/painted.field" \
+  --sample "$work/sample.pgm" --stats "$work/painted.json" --max-loo-ratio 1.5 --max-projection-ratio 0.5
 "$meshquilt" inspect "$work/relief.ply" --json > "$work/inspect.json"
 "$python" - "$work/inspect.json" <<'PY'
 import json, sys
