@@ -81,6 +81,9 @@ void run_relief(ReliefArgs& args, bool height_given) {
   args.options.paint.cancel = &interrupt_token();
   const ReliefResult relief = relief_surface(in.base, in.sample, in.constraints, args.options, *device);
   write_mesh(relief.mesh, args.output, WriteOptions{.cancel = &interrupt_token()});
+  if (relief.crossing_left > 0)
+    std::fprintf(stderr, "meshquilt: %s passes through itself, and the relief crosses there too (%zu face pair%s)\n",
+                 args.base.c_str(), relief.crossing_left, relief.crossing_left == 1 ? "" : "s");
   if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   double highest = 0.0;
@@ -96,6 +99,7 @@ void run_relief(ReliefArgs& args, bool height_given) {
                                   {"highest", highest},
                                   {"clamped_vertices", relief.clamped},
                                   {"crossing_lowered_vertices", relief.lowered_crossing},
+                                  {"crossing_face_pairs_left", relief.crossing_left},
                                   {"backend", engine::backend_name(device->backend())},
                                   {"seconds", seconds}};
   if (!from.is_null()) summary["from"] = from;

@@ -643,6 +643,7 @@ PYBIND11_MODULE(_meshquilt, m) {
                                 {"highest", highest},
                                 {"clamped_vertices", relief.clamped},
                                 {"crossing_lowered_vertices", relief.lowered_crossing},
+                                {"crossing_face_pairs_left", relief.crossing_left},
                                 {"backend", engine::backend_name(device->backend())},
                                 {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
         if (!from.is_null()) stats["from"] = from;

@@ -97,10 +97,14 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   // itself, at height 0, is the last resort).
   const std::vector<int32_t> one_element(mesh.num_faces(), 0);
   std::vector<uint8_t> lowered(n, 0);
-  for (int round = 0; round < kCrossingRounds; ++round) {
+  for (int round = 0;; ++round) {
     const std::vector<FacePair> crossing =
         intersecting_face_pairs(result.mesh, one_element, IntersectionScope::same_element);
     if (crossing.empty()) break;
+    if (round == kCrossingRounds) {  // at height 0 and still crossing: the base crosses itself
+      result.crossing_left = crossing.size();
+      break;
+    }
     std::vector<uint8_t> lower(n, 0);
     for (const auto& [f, g] : crossing)
       for (int32_t v : {mesh.triangles[f][0], mesh.triangles[f][1], mesh.triangles[f][2], mesh.triangles[g][0],

@@ -1,5 +1,5 @@
 // `meshquilt paint` and `relief` end to end: a coloured and a raised sphere, relief from a bumped
-// model, and one-line errors.
+// model, a base that passes through itself, and one-line errors.
 
 #include <gtest/gtest.h>
 
@@ -199,6 +199,30 @@ TEST(ReliefCli, RaisesTheSphereAndRefusesBadInput) {
       test::run_cli("relief --base " + sphere + " --image " + (dir / "heights.pgm").string() + " --height 0 -o " + out);
   EXPECT_NE(no_height.exit_code, 0);
   EXPECT_NE(no_height.output.find("--height"), std::string::npos) << no_height.output;
+}
+
+TEST(ReliefCli, SaysWhereTheBasePassesThroughItself) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mq_relief_crossing_cli";
+  std::filesystem::create_directories(dir);
+  write_half_red_sample(dir / "heights.ppm");
+  // data/sphere.off (radius 0.5) and its copy 0.6 along x, as one mesh: they cross on a circle.
+  const TriMesh one = read_mesh(std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off");
+  TriMesh both = one;
+  const int32_t offset = static_cast<int32_t>(one.num_vertices());
+  for (const Vec3& p : one.positions) both.positions.push_back(p + Vec3(0.6, 0.0, 0.0));
+  for (const Tri& t : one.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  write_mesh(both, (dir / "two.off").string());
+  const std::string common = " --image " + (dir / "heights.ppm").string() + " --height 0.02 --scale 0.5 --stats " +
+                             (dir / "stats.json").string() + " -o " + (dir / "out.ply").string();
+  const test::CliResult crossed = test::run_cli("relief --base " + (dir / "two.off").string() + common);
+  ASSERT_EQ(crossed.exit_code, 0) << crossed.output;
+  EXPECT_NE(crossed.output.find("two.off passes through itself"), std::string::npos) << crossed.output;
+  EXPECT_GT(nlohmann::json::parse(std::ifstream(dir / "stats.json"))["crossing_face_pairs_left"].get<int>(), 0);
+  const test::CliResult single =
+      test::run_cli("relief --base " + std::string(MESHQUILT_SOURCE_DIR) + "/data/sphere.off" + common);
+  ASSERT_EQ(single.exit_code, 0) << single.output;
+  EXPECT_EQ(single.output.find("passes through itself"), std::string::npos) << single.output;
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(dir / "stats.json"))["crossing_face_pairs_left"].get<int>(), 0);
 }
 
 TEST(ReliefCli, TakesItsSampleFromAModelsDetail) {

@@ -1,6 +1,7 @@
 // Relief against closed forms: a constant height image raises every vertex by the same height
 // along its normal; a hollow too tight for the height is clamped, and the result stays closed
-// and free of self-intersections, where the unclamped one passes through itself.
+// and free of self-intersections, where the unclamped one passes through itself; a base that
+// crosses itself is reported.
 
 #include <gtest/gtest.h>
 
@@ -98,6 +99,27 @@ TEST(SurfaceRelief, AHollowTooTightIsClampedAndStaysClosedWithoutSelfIntersectio
   TriMesh unclamped = refined;
   for (size_t v = 0; v < refined.num_vertices(); ++v) unclamped.positions[v] += 0.5 * surface.vertex_normals[v];
   EXPECT_GT(self_intersections(unclamped), 0u);
+}
+
+TEST(SurfaceRelief, ABaseThatCrossesItselfIsReportedAndLeftAtItsOwnSurfaceThere) {
+  // Two unit spheres 1.2 apart, one mesh: they cross on a circle whatever the heights.
+  const TriMesh one = test::icosphere(2);
+  TriMesh both = one;
+  const int32_t offset = static_cast<int32_t>(one.num_vertices());
+  for (const Vec3& p : one.positions) both.positions.push_back(p + Vec3(1.2, 0.0, 0.0));
+  for (const Tri& t : one.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  ReliefOptions options;
+  options.paint.pixels_per_unit = 6.0;
+  options.height = 0.05;
+  const ReliefResult relief = relief_surface(both, grey(1.0), {}, options, *cpu());
+  EXPECT_GT(relief.crossing_left, 0u);
+  EXPECT_EQ(relief.crossing_left, self_intersections(relief.mesh));
+  // Away from the crossing circle (x = 0.6) every vertex keeps its whole height.
+  const TriMesh refined = split_faces(both, relief.levels);
+  for (size_t v = 0; v < refined.num_vertices(); ++v)
+    if (std::abs(refined.positions[v].x - 0.6) > 0.3) EXPECT_NEAR(relief.heights[v], 0.05, 1e-12) << v;
+  // A single sphere is left with nothing crossing.
+  EXPECT_EQ(relief_surface(one, grey(1.0), {}, options, *cpu()).crossing_left, 0u);
 }
 
 }  // namespace
