@@ -38,7 +38,12 @@ nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, boo
     throw InputError("--region: expected X,Y,Z,RADIUS in model units", ErrorKind::invalid_option);
   std::optional<DetailRegion> region;
   if (!args.region.empty()) region = DetailRegion{Vec3(args.region[0], args.region[1], args.region[2]), args.region[3]};
-  const DetailSample sample = detail_sample(model, args.smoothing, region, args.pixels);
+  DetailSample sample;
+  try {
+    sample = detail_sample(model, args.smoothing, region, args.pixels);
+  } catch (const InputError& e) {
+    throw InputError(args.model + ": " + e.text(), e.kind());  // the one model file the error is about
+  }
   const DetailImage& detail = sample.detail;
   in.sample = detail.image;
   // As --image: the sample's width --scale x the base's diagonal; heights scale with widths.

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
 
@@ -36,6 +37,13 @@ TriMesh prepare_base(const TriMesh& input, const std::string& source) {
   TriMesh mesh = weld_vertices(input);
   mesh.elements.clear();
   if (mesh.num_faces() == 0) throw InputError(source + ": no faces left after welding coincident vertices");
+  double total_area = 0.0;
+  for (const Tri& t : mesh.triangles)
+    total_area += glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                         mesh.positions[t[2]] - mesh.positions[t[0]]));
+  const double diagonal = glm::length(bounding_box(mesh.positions).extent());
+  if (!(total_area > 1e-12 * diagonal * diagonal))
+    throw InputError(source + ": no face has area (each has its corners on a line)");
   const auto faces_of_edge = edge_faces(mesh, source);
 
   // Breadth-first over faces: a neighbour that runs the shared edge the same way is flipped.

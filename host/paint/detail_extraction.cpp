@@ -153,6 +153,9 @@ DetailSample detail_sample(const TriMesh& model, double smoothing, const std::op
   if (!(out.radius > 0.0)) throw InputError("{region}: expected a positive radius", ErrorKind::invalid_option);
   out.centre = region ? region->centre : richest_detail_centre(model, heights, out.radius);
   out.detail = detail_image(model, heights, out.centre, out.radius, pixels);
+  if (!(out.detail.high - out.detail.low > 1e-9 * diagonal))
+    throw InputError("{from}: no detail over the region sampled: the model is as smooth there as its smoothed self",
+                     ErrorKind::invalid_option);
   return out;
 }
 

@@ -61,7 +61,8 @@ struct DetailRegion {
 //! smoothing: L in model units, or 0 for 0.01 of the model's bounding-box diagonal; region: the
 //! ball sampled, or none for one of 0.1 of the diagonal round its richest detail.
 //! \throw InputError(invalid_option) "{region}: ..." for a radius that is not positive, and as
-//!        detail_image; SolverError as extract_detail.
+//!        detail_image; "{from}: no detail ..." where the region is as smooth as its smoothed
+//!        self; SolverError as extract_detail.
 DetailSample detail_sample(const TriMesh& model, double smoothing, const std::optional<DetailRegion>& region,
                            int pixels);
 

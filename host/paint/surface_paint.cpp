@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -46,11 +47,14 @@ int refinement_levels(const TriMesh& base, const PaintOptions& o) {
   const double pixels = mean_edge_length(base) * o.pixels_per_unit;
   const int levels = pixels > 1.0 ? static_cast<int>(std::ceil(std::log2(pixels))) : 0;
   const double vertices = static_cast<double>(base.num_faces()) * std::pow(4.0, levels) / 2.0;
-  if (levels > 12 || vertices > static_cast<double>(o.max_vertices))
-    throw InputError("{pixels_per_unit}: " + std::to_string(o.pixels_per_unit) + " sample pixels per base unit needs about " +
-                         std::to_string(static_cast<long long>(vertices)) + " vertices (at most " +
-                         std::to_string(o.max_vertices) + "): use fewer pixels per unit (a smaller {scale} or {sample_width})",
+  if (levels > 12 || vertices > static_cast<double>(o.max_vertices)) {
+    char figures[96];
+    std::snprintf(figures, sizeof figures, "%.6g sample pixels per base unit needs about %.3g vertices", o.pixels_per_unit,
+                  vertices);
+    throw InputError("{pixels_per_unit}: " + std::string(figures) + " (at most " + std::to_string(o.max_vertices) +
+                         "): use fewer pixels per unit (a smaller {scale} or {sample_width})",
                      ErrorKind::invalid_option);
+  }
   return levels;
 }
 

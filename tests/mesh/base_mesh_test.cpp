@@ -251,6 +251,16 @@ TEST(PrepareBase, NanCoordinateAndNoFacesAreRefused) {
   message = error_message([&] { prepare_base(collapsed, "dust.obj"); }, &code);
   EXPECT_EQ(code, ErrorKind::invalid_mesh);
   EXPECT_EQ(message.rfind("dust.obj: ", 0), 0u) << message;
+
+  // Corners apart but on a line: no face has area.
+  TriMesh sliver;
+  sliver.positions = {Vec3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(2.0, 0.0, 0.0), Vec3(3.0, 0.0, 0.0)};
+  sliver.triangles = {{0, 1, 2}, {1, 3, 2}};
+  code = std::nullopt;
+  message = error_message([&] { prepare_base(sliver, "line.off"); }, &code);
+  EXPECT_EQ(code, ErrorKind::invalid_mesh);
+  EXPECT_EQ(message.rfind("line.off: ", 0), 0u) << message;
+  EXPECT_NE(message.find("no face has area"), std::string::npos) << message;
 }
 
 // --- real meshes ---------------------------------------------------------------------------

@@ -56,6 +56,12 @@ TEST(PaintCli, ColoursTheSphereAndRefusesBadInput) {
                                    (dir / "sample.ppm").string() + " --window 4 -o " + out);
   EXPECT_NE(window.exit_code, 0);
   EXPECT_NE(window.output.find("--window"), std::string::npos) << window.output;
+  const test::CliResult tiny = test::run_cli("paint --base " + std::string(MESHQUILT_SOURCE_DIR) +
+                                             "/data/sphere.off --image " + (dir / "sample.ppm").string() +
+                                             " --scale 1e-9 -o " + out);
+  EXPECT_NE(tiny.exit_code, 0);
+  EXPECT_NE(tiny.output.find("vertices (at most"), std::string::npos) << tiny.output;
+  EXPECT_EQ(tiny.output.find("about -"), std::string::npos) << tiny.output;  // no overflow in the estimate
   // The good output is left as it was.
   EXPECT_EQ(read_mesh(out).colors.size(), painted.num_vertices());
 
@@ -264,6 +270,13 @@ TEST(ReliefCli, TakesItsSampleFromAModelsDetail) {
                                                " --region 0,0,0.5,-1 -o " + out);
   EXPECT_NE(region.exit_code, 0);
   EXPECT_NE(region.output.find("--region"), std::string::npos) << region.output;
+  // A flat model has no detail: its file is named.
+  const std::string flat_model = (dir / "flat.off").string();
+  write_mesh(test::flat_grid(32, 32, 1.0 / 32), flat_model);
+  const test::CliResult smooth =
+      test::run_cli("relief --base " + sphere + " --from " + flat_model + " --region 0.5,0.5,0,0.4 -o " + out);
+  EXPECT_NE(smooth.exit_code, 0);
+  EXPECT_NE(smooth.output.find("flat.off: --from: no detail"), std::string::npos) << smooth.output;
   // The good output is left as it was.
   EXPECT_EQ(read_mesh(out).num_vertices(), raised.num_vertices());
 }
