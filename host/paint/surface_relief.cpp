@@ -18,6 +18,9 @@ namespace {
 // fold's depth).
 constexpr int kCrossingRounds = 12;
 
+// Passes that bring a turned face's highest corner to its lowest before whole faces go to the base.
+constexpr int kUnfoldPasses = 32;
+
 // The base's smooth normal at each vertex of its split: the base's vertex normals interpolated
 // over the base face the vertex lies in. The split's own normals are the base faces' inside each
 // face and turn at once across its edges, where a raised sheet would fold on itself.
@@ -40,6 +43,19 @@ std::vector<Vec3> smooth_normals(const TriMesh& base, const TriMesh& split, int 
                      r * surface.vertex_normals[t[2]];
       out[v] = glm::length(n) > 1e-12 ? glm::normalize(n) : surface.face_normals[g >> (2 * levels)];
     }
+  }
+  return out;
+}
+
+// Faces turned over by the raise, against the base's own face normals. A face turns where a
+// steep step in the heights meets normals that lean across it: the crossing test, which skips
+// faces that share a vertex, does not see such a fold.
+std::vector<size_t> turned_faces(const TriMesh& raised, const BaseSurface& base) {
+  std::vector<size_t> out;
+  for (size_t f = 0; f < raised.num_faces(); ++f) {
+    const Tri& t = raised.triangles[f];
+    const Vec3* p = raised.positions.data();
+    if (glm::dot(glm::cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]), base.face_normals[f]) < 0.0) out.push_back(f);
   }
   return out;
 }
@@ -98,6 +114,26 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   const std::vector<int32_t> one_element(mesh.num_faces(), 0);
   std::vector<uint8_t> lowered(n, 0);
   for (int round = 0;; ++round) {
+    // Each turned face's highest corner comes down to its lowest until none is turned; after
+    // kUnfoldPasses, whole turned faces go to the base. Heights only fall, so it ends.
+    for (int pass = 0;; ++pass) {
+      const std::vector<size_t> turned = turned_faces(result.mesh, surface);
+      if (turned.empty()) break;
+      for (size_t f : turned) {
+        Tri t = mesh.triangles[f];
+        std::sort(t.begin(), t.end(), [&](int32_t a, int32_t b) { return result.heights[a] > result.heights[b]; });
+        const double level = pass < kUnfoldPasses ? result.heights[t[2]] : 0.0;
+        for (int32_t v : pass < kUnfoldPasses ? std::vector<int32_t>{t[0]} : std::vector<int32_t>{t[0], t[1], t[2]}) {
+          if (result.heights[v] <= level) continue;
+          result.heights[v] = level;
+          result.mesh.positions[v] = mesh.positions[v] + level * normals[v];
+          if (!lowered[v]) {
+            lowered[v] = 1;
+            ++result.lowered_crossing;
+          }
+        }
+      }
+    }
     const std::vector<FacePair> crossing =
         intersecting_face_pairs(result.mesh, one_element, IntersectionScope::same_element);
     if (crossing.empty()) break;

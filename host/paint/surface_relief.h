@@ -4,9 +4,10 @@
 //! along the base's smooth normals (its vertex normals interpolated over each face). Heights are
 //! clamped where the displaced surface would pass through itself: each to a share of the room
 //! along its normal (the distance to the surface met by a ray along it) and of the radius of
-//! curvature where the surface is concave (neighbouring normals converge there); then, where
-//! faces still cross, their vertices' heights are halved until none do (or, where the base itself
-//! crosses, until they reach it). Connectivity is the base's refined one, so a closed base stays
+//! curvature where the surface is concave (neighbouring normals converge there); then a face
+//! turned over at a steep step has its highest corner brought down, and where faces still cross
+//! their vertices' heights are halved until none do (or, where the base itself crosses, until they
+//! reach it). Connectivity is the base's refined one, so a closed base stays
 //! closed.
 
 #include <vector>
@@ -26,7 +27,7 @@ struct ReliefResult {
   std::vector<double> heights;  //!< #V displacement of each vertex along its normal, after clamping
   std::vector<Vec3> directions; //!< #V the field the signal was synthesized along
   int clamped = 0;              //!< vertices whose height was lowered to their room
-  int lowered_crossing = 0;     //!< vertices lowered further where raised faces still crossed
+  int lowered_crossing = 0;     //!< vertices lowered further where raised faces crossed or turned over
   size_t crossing_left = 0;     //!< face pairs crossing at the end: where the base passes through itself
   int levels = 0;               //!< 1-to-4 splits of the base
 };
