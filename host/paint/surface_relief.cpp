@@ -18,6 +18,9 @@ namespace {
 // fold's depth).
 constexpr int kCrossingRounds = 12;
 
+// The share of a vertex's height its neighbours' mean takes: a half cancels a zigzag a pixel wide.
+constexpr double kNeighbourShare = 0.5;
+
 // Passes that bring a turned face's highest corner to its lowest before whole faces go to the base.
 constexpr int kUnfoldPasses = 32;
 
@@ -60,6 +63,29 @@ std::vector<size_t> turned_faces(const TriMesh& raised, const BaseSurface& base)
   return out;
 }
 
+// The synthesized signal (the vertex colours' luma), each vertex's own and its neighbours' mean
+// weighed by kNeighbourShare: where two patches of the sample meet, vertices a pixel apart may
+// alternate between them, and raised that zigzag becomes a row of teeth.
+std::vector<double> smoothed_at_the_pixel(const TriMesh& mesh, const BaseSurface& surface) {
+  const size_t n = mesh.num_vertices();
+  std::vector<double> signal(n), out(n);
+  for (size_t v = 0; v < n; ++v) {
+    const auto& c = mesh.colors[v];
+    signal[v] = luma(glm::dvec3(c[0], c[1], c[2])) / 255.0;
+  }
+  for (size_t v = 0; v < n; ++v) {
+    double sum = 0.0;
+    for (const auto& [u, length] : surface.edges[v]) sum += signal[u];
+    if (surface.edges[v].empty()) {
+      out[v] = signal[v];
+      continue;
+    }
+    const double mean = sum / static_cast<double>(surface.edges[v].size());
+    out[v] = (1.0 - kNeighbourShare) * signal[v] + kNeighbourShare * mean;
+  }
+  return out;
+}
+
 }  // namespace
 
 ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
@@ -81,10 +107,9 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   const size_t n = mesh.num_vertices();
   result.heights.resize(n);
   std::vector<Vec3> moved(n);
+  const std::vector<double> signal = smoothed_at_the_pixel(mesh, surface);
   for (size_t v = 0; v < n; ++v) {
-    const auto& c = mesh.colors[v];
-    const double signal = luma(glm::dvec3(c[0], c[1], c[2])) / 255.0;
-    double h = options.height * signal;
+    double h = options.height * signal[v];
     const Vec3& p = mesh.positions[v];
     const Vec3& normal = normals[v];
     // Room along the normal: the surface the ray meets, past the vertex's own faces.
