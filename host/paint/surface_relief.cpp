@@ -74,13 +74,11 @@ std::vector<double> smoothed_at_the_pixel(const TriMesh& mesh, const BaseSurface
     signal[v] = luma(glm::dvec3(c[0], c[1], c[2])) / 255.0;
   }
   for (size_t v = 0; v < n; ++v) {
-    double sum = 0.0;
-    for (const auto& [u, length] : surface.edges[v]) sum += signal[u];
-    if (surface.edges[v].empty()) {
-      out[v] = signal[v];
-      continue;
-    }
-    const double mean = sum / static_cast<double>(surface.edges[v].size());
+    out[v] = signal[v];
+    if (surface.edges[v].empty()) continue;
+    double mean = 0.0;
+    for (const auto& [u, length] : surface.edges[v]) mean += signal[u];
+    mean /= static_cast<double>(surface.edges[v].size());
     out[v] = (1.0 - kNeighbourShare) * signal[v] + kNeighbourShare * mean;
   }
   return out;
@@ -134,10 +132,20 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
   }
   result.mesh.positions = std::move(moved);
   // Those clamps look at one vertex at a time: across a crease, or a fold of a scan, raised
-  // neighbours may still cross. Their heights are halved until no two faces cross (the base
-  // itself, at height 0, is the last resort).
+  // neighbours may still cross, and at a steep step a face may turn over. Such heights come
+  // down until no face is turned and no two cross (the base itself, at height 0, is the last
+  // resort).
   const std::vector<int32_t> one_element(mesh.num_faces(), 0);
   std::vector<uint8_t> lowered(n, 0);
+  const auto lower_to = [&](int32_t v, double level) {
+    if (result.heights[v] <= level) return;
+    result.heights[v] = level;
+    result.mesh.positions[v] = mesh.positions[v] + level * normals[v];
+    if (!lowered[v]) {
+      lowered[v] = 1;
+      ++result.lowered_crossing;
+    }
+  };
   for (int round = 0;; ++round) {
     // Each turned face's highest corner comes down to its lowest until none is turned; after
     // kUnfoldPasses, whole turned faces go to the base. Heights only fall, so it ends.
@@ -147,16 +155,10 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
       for (size_t f : turned) {
         Tri t = mesh.triangles[f];
         std::sort(t.begin(), t.end(), [&](int32_t a, int32_t b) { return result.heights[a] > result.heights[b]; });
-        const double level = pass < kUnfoldPasses ? result.heights[t[2]] : 0.0;
-        for (int32_t v : pass < kUnfoldPasses ? std::vector<int32_t>{t[0]} : std::vector<int32_t>{t[0], t[1], t[2]}) {
-          if (result.heights[v] <= level) continue;
-          result.heights[v] = level;
-          result.mesh.positions[v] = mesh.positions[v] + level * normals[v];
-          if (!lowered[v]) {
-            lowered[v] = 1;
-            ++result.lowered_crossing;
-          }
-        }
+        if (pass < kUnfoldPasses)
+          lower_to(t[0], result.heights[t[2]]);
+        else
+          for (int32_t v : t) lower_to(v, 0.0);
       }
     }
     const std::vector<FacePair> crossing =
@@ -171,15 +173,8 @@ ReliefResult relief_surface(const TriMesh& base, const ColourImage& sample,
       for (int32_t v : {mesh.triangles[f][0], mesh.triangles[f][1], mesh.triangles[f][2], mesh.triangles[g][0],
                         mesh.triangles[g][1], mesh.triangles[g][2]})
         lower[v] = 1;
-    for (size_t v = 0; v < n; ++v) {
-      if (!lower[v] || result.heights[v] <= 0.0) continue;
-      result.heights[v] = round + 1 < kCrossingRounds ? 0.5 * result.heights[v] : 0.0;
-      result.mesh.positions[v] = mesh.positions[v] + result.heights[v] * normals[v];
-      if (!lowered[v]) {
-        lowered[v] = 1;
-        ++result.lowered_crossing;
-      }
-    }
+    for (size_t v = 0; v < n; ++v)
+      if (lower[v]) lower_to(static_cast<int32_t>(v), round + 1 < kCrossingRounds ? 0.5 * result.heights[v] : 0.0);
   }
   return result;
 }

@@ -2,14 +2,14 @@
 //! Relief from an image over a surface: a height signal synthesized as paint synthesizes colour
 //! (the sample's luma, 0 black to 1 white), then the refined base displaced by height x signal
 //! (each vertex's signal averaged half and half with its neighbours', so that a zigzag between
-//! patches a pixel apart does not stand as teeth) along the base's smooth normals (its vertex normals interpolated over each face). Heights are
-//! clamped where the displaced surface would pass through itself: each to a share of the room
-//! along its normal (the distance to the surface met by a ray along it) and of the radius of
-//! curvature where the surface is concave (neighbouring normals converge there); then a face
-//! turned over at a steep step has its highest corner brought down, and where faces still cross
-//! their vertices' heights are halved until none do (or, where the base itself crosses, until they
-//! reach it). Connectivity is the base's refined one, so a closed base stays
-//! closed.
+//! patches a pixel apart does not stand as teeth) along the base's smooth normals (its vertex
+//! normals interpolated over each face). Heights are clamped where the displaced surface would
+//! pass through itself: each to a share of the room along its normal (the distance to the
+//! surface met by a ray along it) and of the radius of curvature where the surface is concave
+//! (neighbouring normals converge there); then a face turned over at a steep step has its
+//! highest corner brought down, and where faces still cross their vertices' heights are halved
+//! until none do (or, where the base itself crosses, until they reach it). Connectivity is the
+//! base's refined one, so a closed base stays closed.
 
 #include <vector>
 

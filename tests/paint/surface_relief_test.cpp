@@ -162,7 +162,9 @@ TEST(SurfaceRelief, ABaseThatCrossesItselfIsReportedAndLeftAtItsOwnSurfaceThere)
   // Away from the crossing circle (x = 0.6) every vertex keeps its whole height.
   const TriMesh refined = split_faces(both, relief.levels);
   for (size_t v = 0; v < refined.num_vertices(); ++v)
-    if (std::abs(refined.positions[v].x - 0.6) > 0.3) EXPECT_NEAR(relief.heights[v], 0.05, 1e-12) << v;
+    if (std::abs(refined.positions[v].x - 0.6) > 0.3) {
+      EXPECT_NEAR(relief.heights[v], 0.05, 1e-12) << v;
+    }
   // A single sphere is left with nothing crossing.
   EXPECT_EQ(relief_surface(one, grey(1.0), {}, options, *cpu()).crossing_left, 0u);
 }
