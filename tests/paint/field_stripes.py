@@ -30,9 +30,8 @@ except ImportError:
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paint_neighbourhoods import vertex_normals  # noqa: E402
+from paint_samples import STRIPE_DARK, STRIPE_LIGHT  # noqa: E402
 from relief_heights import read_ply  # noqa: E402
-
-DARK, LIGHT = np.array([0.85, 0.2, 0.2]), np.array([0.95, 0.95, 0.9])  # paint_samples.py's stripes
 
 
 def edges_with_cotangent_weights(vertices, faces):
@@ -130,7 +129,7 @@ def main():
     pixels_per_unit = json.load(open(args.stats))["pixels_per_unit"]
     phase, amplitude = stripe_phase(vertices, faces, field, 2.0 * np.pi * pixels_per_unit / args.period)
     t = (0.5 + 0.5 * np.sin(phase))[:, None]
-    write_coloured_ply(args.output, vertices, faces, t * DARK + (1 - t) * LIGHT)
+    write_coloured_ply(args.output, vertices, faces, t * STRIPE_DARK + (1 - t) * STRIPE_LIGHT)
     print(json.dumps({"vertices": len(vertices), "amplitude_median": float(np.median(amplitude))}))
 
 

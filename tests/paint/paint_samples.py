@@ -12,6 +12,8 @@ import sys
 import numpy as np
 
 SIZE = 64
+# striped.ppm's two colours (field_stripes.py paints its reference in them).
+STRIPE_DARK, STRIPE_LIGHT = np.array([0.85, 0.2, 0.2]), np.array([0.95, 0.95, 0.9])
 
 
 def write_ppm(path, rgb):
@@ -42,7 +44,7 @@ def main():
     write_ppm(out + "/stochastic.ppm", two_colours(n, n))
     y = np.arange(n)[:, None] * np.ones((1, n))
     s = (0.5 + 0.5 * np.sin(2 * np.pi * y / 8))[..., None] + 0.03 * rng.standard_normal((n, n, 1))
-    write_ppm(out + "/striped.ppm", s * np.array([0.85, 0.2, 0.2]) + (1 - s) * np.array([0.95, 0.95, 0.9]))
+    write_ppm(out + "/striped.ppm", s * STRIPE_DARK + (1 - s) * STRIPE_LIGHT)
     grey = np.zeros((n, n))
     yy, xx = np.mgrid[0:n, 0:n]
     for cy in range(0, n, 16):
