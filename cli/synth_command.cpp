@@ -66,6 +66,8 @@ nlohmann::json quilt_summary(const QuiltStats& stats) {
       {"refused_merges", stats.merges.refused_merges},
       {"undone_deformations", stats.merges.undone_deformations},
       {"refused_pinned", stats.merges.refused_pinned},
+      {"lattice_copies", stats.merges.lattice_copies},
+      {"on_lattice", stats.on_lattice},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},
       {"dropped_folded", stats.dropped_folded},
@@ -152,7 +154,6 @@ void add_curved_summary(const SynthArgs& args, const SurfaceQuiltStats& stats, c
   summary["layout_windows"] = stats.layout_windows;
   summary["field_symmetry"] = stats.field_symmetry;
   summary["cones"] = stats.cones;
-  summary["on_lattice"] = stats.on_lattice;
   summary["outside_vertices"] = stats.outside_vertices;
   summary["shell_height"] = stats.shell_height;
   summary["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;

@@ -17,6 +17,7 @@
 #include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
+#include "quilt/lattice_copies.h"
 #include "quilt/layer_collisions.h"
 #include "quilt/quilt_policies.h"
 #include "spatial/intersecting_pairs.h"
@@ -520,13 +521,40 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   outcome.footprint = footprint;
 
   PlacedSwatch placed_swatch = place_swatch(swatch, request, t);
-  std::vector<TriMesh>& inputs = placed_swatch.inputs;
-  outcome.inputs = static_cast<int>(inputs.size());
-  const std::vector<TriMesh> placed = inputs;
+  outcome.inputs = static_cast<int>(placed_swatch.inputs.size());
+  const std::vector<TriMesh> placed = placed_swatch.inputs;
 
   std::vector<uint8_t> occupied;
-  const std::vector<int32_t> affected = occupy_cells(layer, footprint, request.grid, occupied);
+  std::vector<int32_t> affected = occupy_cells(layer, footprint, request.grid, occupied);
   const PlaneGrid& grid = request.grid;
+  // The inputs that are an element already there stand for it and leave the step, and so does it.
+  std::vector<int32_t> copy_of(placed.size(), -1);
+  if (options.skip_lattice_copies) {
+    StageTimer timer(seconds, "copies");
+    copy_of = lattice_copies(layer, affected, placed, options.copy_tolerance * swatch.mean_edge);
+    std::vector<uint8_t> held(layer.size(), 0);
+    PlacedSwatch rest;
+    rest.left_out = std::move(placed_swatch.left_out);
+    rest.left_out_source = std::move(placed_swatch.left_out_source);
+    for (size_t i = 0; i < placed.size(); ++i) {
+      if (copy_of[i] >= 0) {
+        held[copy_of[i]] = 1;
+        continue;
+      }
+      rest.inputs.push_back(std::move(placed_swatch.inputs[i]));
+      rest.input_source.push_back(placed_swatch.input_source[i]);
+    }
+    placed_swatch = std::move(rest);
+    std::erase_if(affected, [&held](int32_t e) { return held[e] != 0; });
+    if (request.contacts) {
+      const std::vector<uint8_t> neighbour = lattice_neighbours(layer, affected, placed_swatch.input_source, swatch, t,
+                                                                *request.contacts, options.copy_tolerance * swatch.mean_edge);
+      for (size_t k = 0; k < affected.size(); ++k) held[affected[k]] = neighbour[k];
+      std::erase_if(affected, [&held](int32_t e) { return held[e] != 0; });
+    }
+    counts.lattice_copies += static_cast<int>(placed.size() - placed_swatch.inputs.size());
+  }
+  std::vector<TriMesh>& inputs = placed_swatch.inputs;
   // The overlap does not end at the domain's edge: where an output element and an input both
   // hang over it, they must be cut and stitched there too, or the input keeps a stub past the
   // output's end that no seam can join (the edge cells' occupancy stands for what lies beyond).
@@ -581,8 +609,11 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     commit_merge(ctx, *partners[k], std::move(merges[k]));
   }
   add_unmerged_inputs(ctx, in_partnered, outcome);
-  if (!request.account_per_input) ctx.representative.clear();
-  outcome.covered = covered_cells(layer, placed, ctx.representative, placed_swatch.left_out,
+  std::vector<int32_t> representative = std::move(copy_of);
+  for (size_t i = 0, rest = 0; i < representative.size(); ++i)
+    if (representative[i] < 0) representative[i] = ctx.representative[rest++];
+  if (!request.account_per_input) representative.clear();
+  outcome.covered = covered_cells(layer, placed, representative, placed_swatch.left_out,
                                   placed_swatch.left_out_source, footprint,
                                   swatch, grid, request);
   return outcome;

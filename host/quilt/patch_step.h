@@ -34,6 +34,8 @@
 
 namespace meshquilt {
 
+class LatticeContacts;
+
 //! An output element (or its part inside the plane), in plane coordinates.
 struct PlaneElement {
   TriMesh mesh;                  //!< no `elements` ids
@@ -57,6 +59,11 @@ struct PlaneGrid {
 //! Options of the step (shared by every driver).
 struct PatchStepOptions {
   double partner_distance = 0.5;  //!< merge partners' mean pair distance, in mean edge lengths, at most
+  //! Inputs that are an output element already there (quilt/lattice_copies.h) skip the step;
+  //! false sends them through it, which gives the same elements more slowly.
+  bool skip_lattice_copies = true;
+  //! How close, in the swatch's mean edge lengths, an input must lie to an output element to be it.
+  double copy_tolerance = 1e-6;
   CorrespondenceOptions correspondence;
   DeformationOptions deformation;
   MergeOptions merging;
@@ -99,6 +106,10 @@ struct PatchRequest {
   //! the placement is exact (a shared layout's periods): there such an input fills a gap
   //! between neighbours that occupy its cells, and the collision test keeps out duplicates.
   bool reject_covered_inputs = true;
+  //! Where the candidates are the swatch's lattice placements, its pattern's contacts: output
+  //! elements that are unchanged copies on that lattice and come near no input leave the step
+  //! (quilt/lattice_copies.h). Null: every output element under the footprint takes part.
+  LatticeContacts* contacts = nullptr;
   PlaneGrid grid;                            //!< cells for the overlap's occupancy
   //! Whether a point of the plane lies in the output domain: inputs whose centre lies outside
   //! are not placed, and cells whose centre lies outside need no cover.
@@ -137,6 +148,7 @@ struct MergeCounts {
   int refused_merges = 0;        //!< merges whose result would have passed through a neighbour
   int undone_deformations = 0;   //!< output deformations undone because they hit a neighbour
   int refused_pinned = 0;        //!< changes refused because they would move a pinned vertex
+  int lattice_copies = 0;        //!< inputs that were an output element already there (skipped the step)
 };
 
 //! What one step did.

@@ -2,13 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
 #include <random>
 
 #include "core/error.h"
 #include "mesh/topology.h"
+#include "quilt/lattice_copies.h"
 #include "quilt/merging/abutting_elements.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
+#include "quilt/swatch_lattice.h"
 
 namespace meshquilt {
 namespace {
@@ -26,6 +31,73 @@ std::vector<glm::dvec2> covering_translations(int px, int py, int sub_nx, int su
   for (int ty = py + sub_ny - swatch_ny; ty <= py; ++ty)
     for (int tx = px + sub_nx - swatch_nx; tx <= px; ++tx) candidates.emplace_back(tx * cell, ty * cell);
   return candidates;
+}
+
+// How many elements of the swatch placed at `phase` and every period from it have their centre
+// in `domain`: row by row along the second period, each row's count in closed form.
+int64_t elements_inside(const QuiltSwatch& swatch, const SwatchLattice& lattice, const glm::dvec2& phase,
+                        const Rect2& domain) {
+  const std::array<glm::dvec2, 2>& b = lattice.basis;
+  int64_t count = 0;
+  for (const Rect2& bounds : swatch.element_bounds) {
+    const glm::dvec2 c = 0.5 * (bounds.lo + bounds.hi) + phase;
+    double k1_lo = std::numeric_limits<double>::max(), k1_hi = std::numeric_limits<double>::lowest();
+    for (const glm::dvec2& corner : {domain.lo, domain.hi, glm::dvec2(domain.lo.x, domain.hi.y), glm::dvec2(domain.hi.x, domain.lo.y)}) {
+      const double k1 = lattice_coordinates(corner - c, b).y;
+      k1_lo = std::min(k1_lo, k1);
+      k1_hi = std::max(k1_hi, k1);
+    }
+    for (double k1 = std::ceil(k1_lo); k1 <= k1_hi; ++k1) {
+      // The row c + k1 b1 + s b0 inside the domain: s within the slab of x, then of y.
+      const glm::dvec2 o = c + k1 * b[1];
+      double lo = std::numeric_limits<double>::lowest(), hi = std::numeric_limits<double>::max();
+      for (int axis = 0; axis < 2; ++axis) {
+        if (b[0][axis] == 0.0) {
+          if (o[axis] < domain.lo[axis] || o[axis] > domain.hi[axis]) lo = 1.0, hi = 0.0;
+          continue;
+        }
+        const double s0 = (domain.lo[axis] - o[axis]) / b[0][axis], s1 = (domain.hi[axis] - o[axis]) / b[0][axis];
+        lo = std::max(lo, std::min(s0, s1));
+        hi = std::min(hi, std::max(s0, s1));
+      }
+      if (hi >= lo) count += static_cast<int64_t>(std::floor(hi) - std::ceil(lo) + 1.0);
+    }
+  }
+  return count;
+}
+
+// The lattice's phase over the plane: of an 8 x 8 grid of phases within one period cell, the
+// first that puts the most element centres in the domain (at the origin alone, a row of rings
+// can fall just past each edge and leave a bare strip).
+glm::dvec2 lattice_phase(const QuiltSwatch& swatch, const SwatchLattice& lattice, const Rect2& domain) {
+  glm::dvec2 best(0.0);
+  int64_t most = -1;
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const glm::dvec2 phase = (i / 8.0) * lattice.basis[0] + (j / 8.0) * lattice.basis[1];
+      const int64_t inside = elements_inside(swatch, lattice, phase, domain);
+      if (inside > most) {
+        most = inside;
+        best = phase;
+      }
+    }
+  return best;
+}
+
+// Over a plane a repeating swatch is placed at a period from the phase, among those within the
+// candidates' range: the best of them by matching, and as they are, since a refined placement
+// would leave the lattice.
+void place_on_lattice(const SwatchLattice& lattice, const glm::dvec2& phase, double cell, PatchRequest& request) {
+  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+  for (const glm::dvec2& t : request.candidates) {
+    lo = glm::min(lo, t);
+    hi = glm::max(hi, t);
+  }
+  std::vector<glm::dvec2> placements = lattice_placements(lo, hi, -phase, lattice.basis, 1e-9 * cell);
+  if (placements.empty()) return;
+  request.candidates = std::move(placements);
+  request.refine = false;
+  request.reject_covered_inputs = false;
 }
 
 }  // namespace
@@ -52,6 +124,19 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   stats.cell_size = cell;
   stats.plane_extent = domain.hi;
 
+  // A repeating swatch is placed at its periods only: its pattern then runs on unbroken, and a
+  // patch's inputs are mostly copies of elements already there (quilt/lattice_copies.h).
+  std::optional<SwatchLattice> lattice;
+  {
+    StageTimer timer(seconds, "swatch");
+    if (options.lattice_placement) lattice = swatch_lattice(swatch, 1);
+  }
+  stats.on_lattice = lattice.has_value();
+  std::unique_ptr<LatticeContacts> contacts;
+  const glm::dvec2 phase = lattice ? lattice_phase(swatch, *lattice, domain) : glm::dvec2(0.0);
+  if (lattice)
+    contacts = std::make_unique<LatticeContacts>(swatch, lattice->basis, setup.step.partner_distance * swatch.mean_edge);
+
   SeedFinder seeds(grid.nx, grid.ny);
   HoleTracker holes(seeds, options.seed_attempts);
   std::mt19937_64 rng(options.seed);
@@ -77,6 +162,10 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
     const int py = std::clamp(seed_y - sub_ny / 2, 0, grid.ny - sub_ny);
     request.sub_patch = {glm::dvec2(px * cell, py * cell), glm::dvec2((px + sub_nx) * cell, (py + sub_ny) * cell)};
     request.candidates = covering_translations(px, py, sub_nx, sub_ny, setup.swatch_nx, setup.swatch_ny, cell);
+    if (lattice) {
+      place_on_lattice(*lattice, phase, cell, request);
+      request.contacts = contacts.get();
+    }
     const Rect2& placing = holes.tries(seed_cell) > 0 ? retry_domain : domain;
     request.inside_domain = [&placing](const glm::dvec2& p) { return placing.contains(p); };
     const PatchOutcome outcome =

@@ -16,6 +16,9 @@ class Device;
 struct PlanarQuiltOptions : QuiltOptions {
   double width = 4.0;   //!< output size along x, in swatch extents
   double height = 4.0;  //!< output size along y, in swatch extents
+  //! Place a repeating swatch at its periods only (quilt/swatch_lattice.h); false: at any cell
+  //! translation matching chooses, refined.
+  bool lattice_placement = true;
 };
 
 //! Grows a planar layer of `options.width x options.height` swatch extents from `swatch` (any

@@ -55,6 +55,9 @@ struct QuiltStats {
   int holes = 0;                  //!< connected groups of cells left uncovered after seed_attempts patches
   int hole_cells = 0;             //!< cells in holes
   double largest_hole_area = 0.0; //!< area of the largest hole (plane units, or base units for surfaces)
+  //! Patches are placed at the swatch's periods only: over a plane, where the swatch has a
+  //! lattice; over a base, where the layout's seams also continue by them.
+  bool on_lattice = false;
   glm::dvec2 plane_extent{0.0};   //!< planar synthesis: the plane covered is [0, plane_extent] in x-y
   std::map<std::string, double> stage_seconds;  //!< seed, match, correspondence, deform, merge, cleanup
   GridSource grid_source = GridSource::built;    //!< the matcher's nearest-face grid

@@ -320,4 +320,24 @@ std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symme
   return lattice;
 }
 
+std::vector<glm::dvec2> lattice_placements(const glm::dvec2& lo, const glm::dvec2& hi, const glm::dvec2& shift,
+                                           const std::array<glm::dvec2, 2>& basis, double slack) {
+  // The box's corners in lattice coordinates bound the periods to try.
+  glm::dvec2 k_lo(std::numeric_limits<double>::max()), k_hi(std::numeric_limits<double>::lowest());
+  for (const glm::dvec2& c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
+    const glm::dvec2 k = lattice_coordinates(c + shift, basis);
+    k_lo = glm::min(k_lo, k);
+    k_hi = glm::max(k_hi, k);
+  }
+  if ((k_hi.x - k_lo.x + 1.0) * (k_hi.y - k_lo.y + 1.0) > 1e5) return {};
+  std::vector<glm::dvec2> placements;
+  for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1)
+    for (double k0 = std::ceil(k_lo.x); k0 <= k_hi.x; ++k0) {
+      const glm::dvec2 t = k0 * basis[0] + k1 * basis[1] - shift;
+      if (t.x >= lo.x - slack && t.y >= lo.y - slack && t.x <= hi.x + slack && t.y <= hi.y + slack) placements.push_back(t);
+    }
+  if (placements.empty()) placements.push_back(nearest_period(0.5 * (lo + hi) + shift, basis) - shift);
+  return placements;
+}
+
 }  // namespace meshquilt

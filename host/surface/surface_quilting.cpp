@@ -15,6 +15,7 @@
 #include "quilt/merging/abutting_elements.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
+#include "quilt/lattice_copies.h"
 #include "quilt/swatch_lattice.h"
 #include "quilt/swatch_symmetry.h"
 #include "surface/direction_field.h"
@@ -119,6 +120,8 @@ class SurfaceDriver {
     // field's rotational freedom.
     const FieldTargets targets = field_targets(base_, field_);
     lattice_ = swatch_lattice(swatch_, n);
+    if (lattice_)
+      contacts_ = std::make_unique<LatticeContacts>(swatch_, lattice_->basis, setup_.step.partner_distance * swatch_.mean_edge);
     std::optional<std::array<glm::dvec2, 2>> periods;
     if (lattice_) periods = std::array<glm::dvec2, 2>{unit_ * lattice_->basis[0], unit_ * lattice_->basis[1]};
     auto layout = std::make_unique<BaseLayout>(base_, n, targets.target, targets.weight, !field_.held_vertices.empty(), periods);
@@ -192,7 +195,7 @@ class SurfaceDriver {
   // point it turns about lies on a period (the layout's origin is one): a patch chooses among
   // those placements within its candidates' range, as they are, and a patch with nothing around
   // it starts the pattern there.
-  void place_on_lattice(const SurfacePatch& patch, PatchRequest& request) const {
+  void place_on_lattice(const SurfacePatch& patch, PatchRequest& request) {
     if (!lattice_ || !layout_ || !layout_->layout().on_lattice || patch.chart != PatchChart::layout_window) return;
     glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (const glm::dvec2& t : request.candidates) {
@@ -200,28 +203,14 @@ class SurfaceDriver {
       hi = glm::max(hi, t);
     }
     const glm::dvec2 shift = patch.origin + lattice_->centre;  // t + shift must be a period
-    const std::array<glm::dvec2, 2>& b = lattice_->basis;
-    // The range's corners in lattice coordinates bound the periods to try.
-    glm::dvec2 k_lo(std::numeric_limits<double>::max()), k_hi(std::numeric_limits<double>::lowest());
-    for (const glm::dvec2& c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {
-      const glm::dvec2 k = lattice_coordinates(c + shift, b);
-      k_lo = glm::min(k_lo, k);
-      k_hi = glm::max(k_hi, k);
-    }
+    std::vector<glm::dvec2> placements = lattice_placements(lo, hi, shift, lattice_->basis, 1e-9 * cell_);
     // A lattice finer than the candidates' spacing by far would list more placements than there
     // are inputs to place: the candidates stay as matching chose them.
-    if ((k_hi.x - k_lo.x + 1.0) * (k_hi.y - k_lo.y + 1.0) > 1e5) return;
-    const double slack = 1e-9 * cell_;
-    std::vector<glm::dvec2> placements;
-    for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1)
-      for (double k0 = std::ceil(k_lo.x); k0 <= k_hi.x; ++k0) {
-        const glm::dvec2 t = k0 * b[0] + k1 * b[1] - shift;
-        if (t.x >= lo.x - slack && t.y >= lo.y - slack && t.x <= hi.x + slack && t.y <= hi.y + slack) placements.push_back(t);
-      }
-    if (placements.empty()) placements.push_back(nearest_period(0.5 * (lo + hi) + shift, b) - shift);
+    if (placements.empty()) return;
     request.candidates = std::move(placements);
     request.refine = false;
     request.reject_covered_inputs = false;
+    request.contacts = contacts_.get();
   }
 
   // A cell that a patch seeded on it did not cover is seeded again with twice the distortion
@@ -540,6 +529,7 @@ class SurfaceDriver {
   double total_area_ = 0.0, processed_area_ = 0.0;
   std::unique_ptr<SurfaceEmbedding> embedding_;
   std::unique_ptr<BaseLayout> layout_;
+  std::unique_ptr<LatticeContacts> contacts_;  // its pattern's contacts, where it has periods
   std::optional<SwatchLattice> lattice_;  // the swatch's periods, where its pattern repeats
   std::vector<Vec3> face_field_;  // per base face, for field-aligned charts of single patches
   std::vector<SurfaceElement> elements_;

@@ -53,7 +53,6 @@ struct SurfaceQuiltStats : QuiltStats {
   int layout_windows = 0;      //!< patches laid out as windows of the shared layout
   int field_symmetry = 0;      //!< n of the layout's field (0 without a layout)
   int cones = 0;               //!< singular vertices of the layout's field
-  bool on_lattice = false;     //!< the layout's seams continue by the swatch's periods
   int outside_vertices = 0;    //!< vertices placed outside their patch, put on its nearest face
   double shell_height = 0.0;   //!< base units
   double diagonal = 0.0;       //!< base bounding-box diagonal
