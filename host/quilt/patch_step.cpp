@@ -213,9 +213,12 @@ std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const 
 void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneElement*>& out_sources,
                      std::vector<TriMesh>& inputs, const Correspondences& corr,
                      const std::vector<const ElementRelation*>& partners, double max_pair_distance,
-                     const DeformationOptions& options) {
+                     double still_distance, const DeformationOptions& options) {
   std::vector<std::vector<VertexConstraint>> out_constraints(outs.size());
   std::vector<std::vector<FaceConstraint>> in_constraints(inputs.size());
+  // Where every pair of an element lies within still_distance (pieces of one yarn placed at the
+  // swatch's periods), its targets are where it already is: the solve would move nothing.
+  std::vector<uint8_t> out_moves(outs.size(), 0), in_moves(inputs.size(), 0);
   for (const ElementRelation* r : partners) {
     for (int32_t k : r->pairs) {
       const VertexFacePair& p = corr.pairs[k];
@@ -225,11 +228,12 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
       const Vec3 target = 0.5 * (outs[p.out_element].positions[p.out_vertex] + p.closest);
       out_constraints[p.out_element].push_back({p.out_vertex, target});
       in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
+      if (p.distance > still_distance) out_moves[p.out_element] = in_moves[p.in_element] = 1;
     }
   }
   // Each element's solve is its own: they run side by side.
   tbb::parallel_for(size_t{0}, outs.size(), [&](size_t o) {
-    if (out_constraints[o].empty()) return;
+    if (out_constraints[o].empty() || !out_moves[o]) return;
     const std::vector<uint8_t>& pinned = out_sources[o]->pinned;
     for (size_t v = 0; v < pinned.size(); ++v)
       if (pinned[v]) out_constraints[o].push_back({static_cast<int32_t>(v), outs[o].positions[v]});
@@ -239,7 +243,7 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
     outs[o].positions = std::move(moved);
   });
   tbb::parallel_for(size_t{0}, inputs.size(), [&](size_t i) {
-    if (!in_constraints[i].empty())
+    if (!in_constraints[i].empty() && in_moves[i])
       inputs[i].positions = deform_with_face_constraints(inputs[i], in_constraints[i], options);
   });
 }
@@ -583,7 +587,8 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       choose_partners(corr, outs.size(), inputs.size(), max_pair_distance, in_partnered);
   {
     StageTimer timer(seconds, "deform");
-    deform_partners(outs, out_sources, inputs, corr, partners, max_pair_distance, options.deformation);
+    deform_partners(outs, out_sources, inputs, corr, partners, max_pair_distance,
+                    options.copy_tolerance * swatch.mean_edge, options.deformation);
   }
   check_cancel();
 
