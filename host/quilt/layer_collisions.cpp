@@ -5,12 +5,19 @@
 
 namespace meshquilt {
 
-LayerCollisions::LayerCollisions(const std::vector<PlaneElement>& layer, const PatchRequest& request)
-    : layer_(layer), request_(request) {
+LayerCollisions::LayerCollisions(const std::vector<PlaneElement>& layer, const PatchRequest& request,
+                                 std::vector<int32_t> near)
+    : layer_(layer), request_(request), near_(std::move(near)), first_new_(layer.size()) {
   for (const TriMesh& m : request.obstacles) {
     obstacle_bounds_.push_back(bounding_box(m.positions));
     obstacle_runs_.push_back(face_run_boxes(m));
   }
+}
+
+template <typename Visit>
+void LayerCollisions::for_each_candidate(Visit&& visit) const {
+  for (int32_t k : near_) visit(static_cast<size_t>(k));
+  for (size_t k = first_new_; k < layer_.size(); ++k) visit(k);
 }
 
 bool LayerCollisions::collides(const TriMesh& mesh, int32_t self, int32_t also) {
@@ -20,12 +27,12 @@ bool LayerCollisions::collides(const TriMesh& mesh, int32_t self, int32_t also) 
   // Grown before any pointer into it is taken.
   in_space_.resize(layer_.size());
   std::vector<CollisionMesh> near;
-  for (size_t k = 0; k < layer_.size(); ++k) {
+  for_each_candidate([&](size_t k) {
     const auto index = static_cast<int32_t>(k);
-    if (!layer_[k].alive || index == self || index == also) continue;
+    if (!layer_[k].alive || index == self || index == also) return;
     const Placed& other = placed(k);
     if (other.box.overlaps(box)) near.push_back({&other.mesh, &other.runs});
-  }
+  });
   for (size_t k = 0; k < request_.obstacles.size(); ++k)
     if (obstacle_bounds_[k].overlaps(box)) near.push_back({&request_.obstacles[k], &obstacle_runs_[k]});
   return passes_through(placed_mesh, near);
@@ -40,11 +47,11 @@ bool LayerCollisions::collides_in_plane(const TriMesh& mesh, int32_t self, int32
   const Rect2 b = xy_bounds(mesh);
   runs_.resize(layer_.size());  // before any pointer into it is taken
   std::vector<CollisionMesh> near;
-  for (size_t k = 0; k < layer_.size(); ++k) {
+  for_each_candidate([&](size_t k) {
     const auto index = static_cast<int32_t>(k);
     if (layer_[k].alive && index != self && index != also && layer_[k].bounds.overlaps(b))
       near.push_back({&layer_[k].mesh, &runs_of(k)});
-  }
+  });
   return passes_through(mesh, near);
 }
 

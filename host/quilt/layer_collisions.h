@@ -19,8 +19,9 @@ namespace meshquilt {
 class LayerCollisions {
  public:
   //! `request` gives to_space (empty: the plane is the space) and the obstacles; both it and
-  //! `layer` outlive this object.
-  LayerCollisions(const std::vector<PlaneElement>& layer, const PatchRequest& request);
+  //! `layer` outlive this object. Only the elements `near` (ascending) and those appended after
+  //! construction are tested against.
+  LayerCollisions(const std::vector<PlaneElement>& layer, const PatchRequest& request, std::vector<int32_t> near);
 
   //! True when `mesh` (in plane coordinates) would pass through an alive layer element other than
   //! `self` and `also` (-1: none), or through an obstacle.
@@ -43,8 +44,14 @@ class LayerCollisions {
   const std::vector<Box3>& runs_of(size_t k);
   const Placed& placed(size_t k);
 
+  // The elements to test against: near_, then every index from first_new_.
+  template <typename Visit>
+  void for_each_candidate(Visit&& visit) const;
+
   const std::vector<PlaneElement>& layer_;
   const PatchRequest& request_;
+  std::vector<int32_t> near_;
+  size_t first_new_;
   std::vector<std::optional<std::vector<Box3>>> runs_;
   std::vector<std::optional<Placed>> in_space_;
   std::vector<Box3> obstacle_bounds_;

@@ -42,9 +42,10 @@ bool keeps_pinned(const PlaneElement& before, const TriMesh& after) {
 }
 
 // Points and normals of the output vertices inside the sub-patch: what the swatch must match.
-void sub_patch_samples(const std::vector<PlaneElement>& layer, const Rect2& sub_patch, std::vector<Vec3>& points,
-                       std::vector<Vec3>& normals) {
-  for (const PlaneElement& e : layer) {
+void sub_patch_samples(const std::vector<PlaneElement>& layer, const std::vector<int32_t>& local, const Rect2& sub_patch,
+                       std::vector<Vec3>& points, std::vector<Vec3>& normals) {
+  for (int32_t k : local) {
+    const PlaneElement& e = layer[k];
     if (!e.alive || !e.bounds.overlaps(sub_patch)) continue;
     const std::vector<Vec3> n = vertex_normals(e.mesh);
     for (size_t v = 0; v < e.mesh.num_vertices(); ++v) {
@@ -54,16 +55,6 @@ void sub_patch_samples(const std::vector<PlaneElement>& layer, const Rect2& sub_
     }
   }
 }
-
-// A rectangle of the grid's cells, [x0, x1] x [y0, y1], with masks of its own: a patch's
-// coverage only reads cells near its footprint, and whole-grid masks made large planes quadratic.
-struct CellWindow {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  int width() const { return x1 - x0 + 1; }
-  size_t size() const { return static_cast<size_t>(width()) * (y1 - y0 + 1); }
-  bool contains(int x, int y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
-  size_t index(int x, int y) const { return static_cast<size_t>(y - y0) * width() + (x - x0); }
-};
 
 // Marks the window's cells touched by each face's x-y bounding box (clamped to the grid first, so
 // geometry past the grid marks its border cells).
@@ -106,10 +97,12 @@ std::vector<uint8_t> dilated(const std::vector<uint8_t>& cells, const CellWindow
 // (request.reachable), so a wider bare strip there is seeded again. Without this, the cells under a yarn that did not
 // fit in a surface patch counted as covered and stayed bare (a tenth of the bunny under the
 // small weave).
-std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<TriMesh>& placed,
+std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const std::vector<int32_t>& local,
+                                   const std::vector<TriMesh>& placed,
                                    const std::vector<int32_t>& representative, const std::vector<TriMesh>& left_out,
                                    const std::vector<int32_t>& left_out_source, const Rect2& footprint,
-                                   const QuiltSwatch& swatch, const PlaneGrid& grid, const PatchRequest& request) {
+                                   const QuiltSwatch& swatch, const PlaneGrid& grid, const PatchRequest& request,
+                                   CellWindow& covered_window) {
   const std::function<bool(const glm::dvec2&)>& inside_domain = request.inside_domain;
   // Only cells under the footprint can be covered; what decides them lies within r cells of
   // them, r the most dilations below (1, or a left-out element's reach).
@@ -133,8 +126,8 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
                           std::min(grid.ny - 1, y1 + reach)};
   const size_t count = window.size();
   std::vector<uint8_t> kept(count, 0), unaccounted(count, 0);
-  for (const PlaneElement& e : layer)
-    if (e.alive && e.bounds.overlaps(footprint)) rasterize_faces(e.mesh, grid, window, kept);
+  for (int32_t k : local)
+    if (layer[k].alive && layer[k].bounds.overlaps(footprint)) rasterize_faces(layer[k].mesh, grid, window, kept);
   // Kept geometry within one cell counts: neighbouring patches register their elements a little
   // apart, and a cell between a kept element and where the swatch had one is not a hole.
   const std::vector<uint8_t> near_kept = dilated(kept, window);
@@ -176,7 +169,8 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
   }
   // A cell next to the footprint's edge is where the next patch's seam goes, unless the domain
   // ends there.
-  std::vector<uint8_t> covered(static_cast<size_t>(grid.nx) * grid.ny, 0);
+  covered_window = CellWindow{x0, y0, x1, y1};
+  std::vector<uint8_t> covered(covered_window.size(), 0);
   // Past the swatch's outline (a turned swatch's corners) it has no geometry by its shape, not
   // by its pattern: such a cell needs kept geometry within a cell.
   const double slack = std::max(0.5 * grid.cell, swatch.outline_slack);
@@ -189,21 +183,22 @@ std::vector<uint8_t> covered_cells(const std::vector<PlaneElement>& layer, const
       const double d = grid.cell;
       if (settled(centre + glm::dvec2(d, 0.0)) && settled(centre - glm::dvec2(d, 0.0)) &&
           settled(centre + glm::dvec2(0.0, d)) && settled(centre - glm::dvec2(0.0, d)))
-        covered[grid.index(x, y)] = 1;
+        covered[covered_window.index(x, y)] = 1;
     }
   return covered;
 }
 
 // The overlap: under the footprint, where output geometry already exists
 // (cells touched by an output face's bounding box). Returns the elements under the footprint.
-std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const Rect2& footprint,
-                                  const PlaneGrid& grid, std::vector<uint8_t>& occupied) {
+std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const std::vector<int32_t>& local,
+                                  const Rect2& footprint, const PlaneGrid& grid, const CellWindow& window,
+                                  std::vector<uint8_t>& occupied) {
   std::vector<int32_t> affected;
-  occupied.assign(static_cast<size_t>(grid.nx) * grid.ny, 0);
-  for (size_t i = 0; i < layer.size(); ++i) {
+  occupied.assign(window.size(), 0);
+  for (int32_t i : local) {
     if (!layer[i].alive || !layer[i].bounds.overlaps(footprint)) continue;
-    affected.push_back(static_cast<int32_t>(i));
-    rasterize_faces(layer[i].mesh, grid, CellWindow{0, 0, grid.nx - 1, grid.ny - 1}, occupied);
+    affected.push_back(i);
+    rasterize_faces(layer[i].mesh, grid, window, occupied);
   }
   return affected;
 }
@@ -213,12 +208,9 @@ std::vector<int32_t> occupy_cells(const std::vector<PlaneElement>& layer, const 
 void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneElement*>& out_sources,
                      std::vector<TriMesh>& inputs, const Correspondences& corr,
                      const std::vector<const ElementRelation*>& partners, double max_pair_distance,
-                     double still_distance, const DeformationOptions& options) {
+                     const DeformationOptions& options) {
   std::vector<std::vector<VertexConstraint>> out_constraints(outs.size());
   std::vector<std::vector<FaceConstraint>> in_constraints(inputs.size());
-  // Where every pair of an element lies within still_distance (pieces of one yarn placed at the
-  // swatch's periods), its targets are where it already is: the solve would move nothing.
-  std::vector<uint8_t> out_moves(outs.size(), 0), in_moves(inputs.size(), 0);
   for (const ElementRelation* r : partners) {
     for (int32_t k : r->pairs) {
       const VertexFacePair& p = corr.pairs[k];
@@ -228,12 +220,11 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
       const Vec3 target = 0.5 * (outs[p.out_element].positions[p.out_vertex] + p.closest);
       out_constraints[p.out_element].push_back({p.out_vertex, target});
       in_constraints[p.in_element].push_back({p.in_face, p.barycentric, target});
-      if (p.distance > still_distance) out_moves[p.out_element] = in_moves[p.in_element] = 1;
     }
   }
   // Each element's solve is its own: they run side by side.
   tbb::parallel_for(size_t{0}, outs.size(), [&](size_t o) {
-    if (out_constraints[o].empty() || !out_moves[o]) return;
+    if (out_constraints[o].empty()) return;
     const std::vector<uint8_t>& pinned = out_sources[o]->pinned;
     for (size_t v = 0; v < pinned.size(); ++v)
       if (pinned[v]) out_constraints[o].push_back({static_cast<int32_t>(v), outs[o].positions[v]});
@@ -243,7 +234,7 @@ void deform_partners(std::vector<TriMesh>& outs, const std::vector<const PlaneEl
     outs[o].positions = std::move(moved);
   });
   tbb::parallel_for(size_t{0}, inputs.size(), [&](size_t i) {
-    if (!in_constraints[i].empty() && in_moves[i])
+    if (!in_constraints[i].empty())
       inputs[i].positions = deform_with_face_constraints(inputs[i], in_constraints[i], options);
   });
 }
@@ -311,7 +302,7 @@ QuiltSwatch prepare_swatch(const TriMesh& input, const std::string& name) {
 bool PatchOutcome::covers(const PlaneGrid& grid, const glm::dvec2& p) const {
   const glm::dvec2 local = (p - grid.origin) / grid.cell;
   if (local.x < 0.0 || local.y < 0.0 || local.x >= grid.nx || local.y >= grid.ny) return false;
-  return covered[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
+  return covers_cell(grid.column(p.x), grid.row(p.y));
 }
 
 int PlaneGrid::column(double x) const {
@@ -513,10 +504,17 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
     if (cancel) cancel->check();
   };
   PatchOutcome outcome;
+  std::vector<int32_t> local;
+  if (request.near) {
+    local = *request.near;
+  } else {
+    local.resize(layer.size());
+    std::iota(local.begin(), local.end(), 0);
+  }
   {
     StageTimer timer(seconds, "match");
     std::vector<Vec3> points, normals;
-    sub_patch_samples(layer, request.sub_patch, points, normals);
+    sub_patch_samples(layer, local, request.sub_patch, points, normals);
     outcome.placement = matcher.match(points, normals, request.candidates, rng, request.refine);
   }
   check_cancel();
@@ -528,9 +526,11 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   outcome.inputs = static_cast<int>(placed_swatch.inputs.size());
   const std::vector<TriMesh> placed = placed_swatch.inputs;
 
-  std::vector<uint8_t> occupied;
-  std::vector<int32_t> affected = occupy_cells(layer, footprint, request.grid, occupied);
   const PlaneGrid& grid = request.grid;
+  const CellWindow footprint_cells{grid.column(footprint.lo.x), grid.row(footprint.lo.y), grid.column(footprint.hi.x),
+                                   grid.row(footprint.hi.y)};
+  std::vector<uint8_t> occupied;
+  std::vector<int32_t> affected = occupy_cells(layer, local, footprint, grid, footprint_cells, occupied);
   // The inputs that are an element already there stand for it and leave the step, and so does it.
   std::vector<int32_t> copy_of(placed.size(), -1);
   if (options.skip_lattice_copies) {
@@ -563,7 +563,7 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   // hang over it, they must be cut and stitched there too, or the input keeps a stub past the
   // output's end that no seam can join (the edge cells' occupancy stands for what lies beyond).
   const std::function<bool(const Vec3&)> in_overlap = [&](const Vec3& p) {
-    return footprint.contains(p) && occupied[grid.index(grid.column(p.x), grid.row(p.y))] != 0;
+    return footprint.contains(p) && occupied[footprint_cells.index(grid.column(p.x), grid.row(p.y))] != 0;
   };
 
   std::vector<TriMesh> outs;
@@ -587,13 +587,12 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
       choose_partners(corr, outs.size(), inputs.size(), max_pair_distance, in_partnered);
   {
     StageTimer timer(seconds, "deform");
-    deform_partners(outs, out_sources, inputs, corr, partners, max_pair_distance,
-                    options.copy_tolerance * swatch.mean_edge, options.deformation);
+    deform_partners(outs, out_sources, inputs, corr, partners, max_pair_distance, options.deformation);
   }
   check_cancel();
 
   StageTimer timer(seconds, "merge");
-  LayerCollisions collisions(layer, request);
+  LayerCollisions collisions(layer, request, local);
   MergeContext ctx{layer, affected, placed_swatch, corr, in_overlap, options.merging, collisions, counts,
                    request.reject_covered_inputs, {}, {}, {}};
   keep_deformations(ctx, outs);
@@ -618,9 +617,9 @@ PatchOutcome quilt_patch(std::vector<PlaneElement>& layer, const PatchRequest& r
   for (size_t i = 0, rest = 0; i < representative.size(); ++i)
     if (representative[i] < 0) representative[i] = ctx.representative[rest++];
   if (!request.account_per_input) representative.clear();
-  outcome.covered = covered_cells(layer, placed, representative, placed_swatch.left_out,
-                                  placed_swatch.left_out_source, footprint,
-                                  swatch, grid, request);
+  for (int32_t k : outcome.added) local.push_back(k);
+  outcome.covered = covered_cells(layer, local, placed, representative, placed_swatch.left_out,
+                                  placed_swatch.left_out_source, footprint, swatch, grid, request, outcome.window);
   return outcome;
 }
 

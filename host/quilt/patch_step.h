@@ -56,6 +56,16 @@ struct PlaneGrid {
   size_t index(int x, int y) const { return static_cast<size_t>(y) * nx + x; }
 };
 
+//! A rectangle of a PlaneGrid's cells, [x0, x1] x [y0, y1], with masks of its own: a patch only
+//! reads and writes cells near its footprint, and whole-grid masks made large planes quadratic.
+struct CellWindow {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  int width() const { return x1 - x0 + 1; }
+  size_t size() const { return x1 < x0 || y1 < y0 ? 0 : static_cast<size_t>(width()) * (y1 - y0 + 1); }
+  bool contains(int x, int y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+  size_t index(int x, int y) const { return static_cast<size_t>(y - y0) * width() + (x - x0); }
+};
+
 //! Options of the step (shared by every driver).
 struct PatchStepOptions {
   double partner_distance = 0.5;  //!< merge partners' mean pair distance, in mean edge lengths, at most
@@ -106,6 +116,10 @@ struct PatchRequest {
   //! the placement is exact (a shared layout's periods): there such an input fills a gap
   //! between neighbours that occupy its cells, and the collision test keeps out duplicates.
   bool reject_covered_inputs = true;
+  //! The layer elements the step may touch, ascending: those whose bounds meet the region any
+  //! candidate placement covers, and those whose bounds meet theirs (a driver's index over a
+  //! large layer). Elements the step appends join them. Null: every element of the layer.
+  const std::vector<int32_t>* near = nullptr;
   //! Where the candidates are the swatch's lattice placements, its pattern's contacts: output
   //! elements that are unchanged copies on that lattice and come near no input leave the step
   //! (quilt/lattice_copies.h). Null: every output element under the footprint takes part.
@@ -166,9 +180,13 @@ struct PatchOutcome {
   //! empty by design); cells outside it (the corners of a turned swatch) are not. A refused
   //! merge, a rejected input or an input that yielded to an element ending short of it leaves
   //! its cells uncovered, so the driver seeds there again.
+  //! Over `window` (the footprint's cells); cells outside it are not covered.
   std::vector<uint8_t> covered;
+  CellWindow window;
   //! Whether the point lies in a covered cell.
   bool covers(const PlaneGrid& grid, const glm::dvec2& p) const;
+  //! Whether grid cell (x, y) is covered.
+  bool covers_cell(int x, int y) const { return window.contains(x, y) && covered[window.index(x, y)] != 0; }
 };
 
 //! Runs one patch on `layer` (modified in place: elements deformed, merged, replaced; inputs

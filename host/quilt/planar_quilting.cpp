@@ -6,10 +6,12 @@
 #include <memory>
 #include <optional>
 #include <random>
+#include <utility>
 
 #include "core/error.h"
 #include "mesh/topology.h"
 #include "quilt/lattice_copies.h"
+#include "quilt/layer_index.h"
 #include "quilt/merging/abutting_elements.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
@@ -74,7 +76,9 @@ glm::dvec2 lattice_phase(const QuiltSwatch& swatch, const SwatchLattice& lattice
   int64_t most = -1;
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 8; ++i) {
-      const glm::dvec2 phase = (i / 8.0) * lattice.basis[0] + (j / 8.0) * lattice.basis[1];
+      // Half steps: a phase that puts a row of centres exactly on the plane's edge would leave
+      // its elements to rounding.
+      const glm::dvec2 phase = ((i + 0.5) / 8.0) * lattice.basis[0] + ((j + 0.5) / 8.0) * lattice.basis[1];
       const int64_t inside = elements_inside(swatch, lattice, phase, domain);
       if (inside > most) {
         most = inside;
@@ -137,6 +141,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   if (lattice)
     contacts = std::make_unique<LatticeContacts>(swatch, lattice->basis, setup.step.partner_distance * swatch.mean_edge);
 
+  LayerIndex index(std::max(swatch.extent.x, swatch.extent.y));
   SeedFinder seeds(grid.nx, grid.ny);
   HoleTracker holes(seeds, options.seed_attempts);
   std::mt19937_64 rng(options.seed);
@@ -168,11 +173,27 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
     }
     const Rect2& placing = holes.tries(seed_cell) > 0 ? retry_domain : domain;
     request.inside_domain = [&placing](const glm::dvec2& p) { return placing.contains(p); };
+    std::vector<int32_t> near;
+    {
+      StageTimer timer(seconds, "index");
+      near = patch_neighbourhood(index, layer, request.candidates, swatch.extent, 2.0 * swatch.mean_edge);
+    }
+    request.near = &near;
+    const size_t existing = layer.size();
     const PatchOutcome outcome =
         quilt_patch(layer, request, swatch, setup.matcher, setup.step, rng, stats.merges, seconds, options.cancel);
     StageTimer timer(seconds, "seed");
-    for (int c = 0; c < total_cells; ++c)
-      if (outcome.covered[c]) seeds.mark_processed(c);
+    // The step changes only the elements it was given and those it appended.
+    for (int32_t k : near)
+      if (std::exchange(layer[k].changed, false)) index.update(layer, k);
+    for (size_t k = existing; k < layer.size(); ++k) {
+      layer[k].changed = false;
+      index.update(layer, static_cast<int32_t>(k));
+    }
+    const CellWindow& w = outcome.window;
+    for (int y = w.y0; y <= w.y1; ++y)
+      for (int x = w.x0; x <= w.x1; ++x)
+        if (outcome.covered[w.index(x, y)]) seeds.mark_processed(static_cast<int>(grid.index(x, y)));
   };
   plane.progress = [&] {
     const int processed = total_cells - seeds.unprocessed_count();
