@@ -43,9 +43,9 @@ for job in "${jobs[@]}"; do
   done
   faces=$(/usr/bin/python3 -c 'import json; print(json.load(open("new.json"))["faces"])')
   n=$(median <new.t); o=-; ratio=-; old_rings=-
-  if [ -n "$old" ]; then o=$(median <old.t); ratio=$(echo "$n / $o" | bc -l | xargs printf "%.2f"); fi
+  if [ -n "$old" ]; then o=$(median <old.t | xargs printf "%.2f"); ratio=$(echo "$n / $o" | bc -l | xargs printf "%.2f"); fi
   floor=-; over=-
-  if [[ "$args" == *--plane* ]]; then
+  if [[ "$args" == *--plane* ]]; then  # the floor: the same swatch tiled to the same faces
     swatch=$(echo "$args" | awk '{print $2}')
     floor=$(/usr/bin/python3 "$root/perf/plain_tiling.py" "$swatch" "$faces" tile.ply --runs 5)
     over=$(echo "$n / $floor" | bc -l | xargs printf "%.0f")

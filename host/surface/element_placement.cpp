@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <tbb/parallel_for.h>
+
 #include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
@@ -18,8 +20,10 @@ ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::ve
   out.through_synthesis_map.assign(static_cast<size_t>(last + 1), 0);
   TriMesh mesh;
   mesh.triangles = triangles;
-  mesh.positions.reserve(vertices.size());
-  for (const LocalVertex& v : vertices) mesh.positions.push_back(embedding.position(v.point, v.height));
+  // Each vertex is placed on its own: side by side, into its own slot.
+  mesh.positions.resize(vertices.size());
+  tbb::parallel_for(size_t{0}, vertices.size(),
+                    [&](size_t v) { mesh.positions[v] = embedding.position(vertices[v].point, vertices[v].height); });
   if (embedding.has_synthesis_map()) {
     std::vector<int32_t> vertex_element(vertices.size(), -1);
     for (size_t f = 0; f < triangles.size(); ++f)
@@ -35,9 +39,10 @@ ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::ve
             any = true;
           }
       if (!any) break;
-      for (size_t v = 0; v < vertices.size(); ++v)
+      tbb::parallel_for(size_t{0}, vertices.size(), [&](size_t v) {
         if (vertex_element[v] >= 0 && moving[vertex_element[v]])
           mesh.positions[v] = embedding.position_during_synthesis(vertices[v].point, vertices[v].height);
+      });
     }
   }
   out.positions = std::move(mesh.positions);
