@@ -182,6 +182,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
     const size_t existing = layer.size();
     const PatchOutcome outcome =
         quilt_patch(layer, request, swatch, setup.matcher, setup.step, rng, stats.merges, seconds, options.cancel);
+    request.near = nullptr;
     StageTimer timer(seconds, "seed");
     // The step changes only the elements it was given and those it appended.
     for (int32_t k : near)
