@@ -30,7 +30,7 @@ bool LayerCollisions::collides(const TriMesh& mesh, int32_t self, int32_t also) 
   for_each_candidate([&](size_t k) {
     const auto index = static_cast<int32_t>(k);
     if (!layer_[k].alive || index == self || index == also) return;
-    const Placed& other = placed(k);
+    const SpaceMesh& other = placed(k);
     if (other.box.overlaps(box)) near.push_back({&other.mesh, &other.runs});
   });
   for (size_t k = 0; k < request_.obstacles.size(); ++k)
@@ -60,12 +60,13 @@ const std::vector<Box3>& LayerCollisions::runs_of(size_t k) {
   return *runs_[k];
 }
 
-const LayerCollisions::Placed& LayerCollisions::placed(size_t k) {
+const SpaceMesh& LayerCollisions::placed(size_t k) {
+  if (layer_[k].in_space && !layer_[k].changed) return *layer_[k].in_space;
   if (!in_space_[k]) {
     TriMesh mesh = request_.to_space(layer_[k].mesh);
     const Box3 box = bounding_box(mesh.positions);
     std::vector<Box3> runs = face_run_boxes(mesh);
-    in_space_[k].emplace(Placed{std::move(mesh), box, std::move(runs)});
+    in_space_[k].emplace(SpaceMesh{std::move(mesh), box, std::move(runs)});
   }
   return *in_space_[k];
 }

@@ -31,18 +31,12 @@ class LayerCollisions {
   void forget(size_t k);
 
  private:
+  bool collides_in_plane(const TriMesh& mesh, int32_t self, int32_t also);
+  const std::vector<Box3>& runs_of(size_t k);
   // A layer element in space: over a curved base, elements apart in the plane can meet in space
   // (where normals converge over a concave part, or a patch wraps around a thin part), so
   // neighbours there are found by their boxes in space, not in the plane.
-  struct Placed {
-    TriMesh mesh;
-    Box3 box;
-    std::vector<Box3> runs;
-  };
-
-  bool collides_in_plane(const TriMesh& mesh, int32_t self, int32_t also);
-  const std::vector<Box3>& runs_of(size_t k);
-  const Placed& placed(size_t k);
+  const SpaceMesh& placed(size_t k);
 
   // The elements to test against: near_, then every index from first_new_.
   template <typename Visit>
@@ -53,7 +47,7 @@ class LayerCollisions {
   std::vector<int32_t> near_;
   size_t first_new_;
   std::vector<std::optional<std::vector<Box3>>> runs_;
-  std::vector<std::optional<Placed>> in_space_;
+  std::vector<std::optional<SpaceMesh>> in_space_;
   std::vector<Box3> obstacle_bounds_;
   std::vector<std::vector<Box3>> obstacle_runs_;
 };

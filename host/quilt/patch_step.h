@@ -26,6 +26,7 @@
 #include "core/error.h"
 #include "mesh/tri_mesh.h"
 #include "mesh/convex_outline.h"
+#include "mesh/measures.h"
 #include "quilt/correspondence.h"
 #include "quilt/element_deformation.h"
 #include "quilt/merging/element_merging.h"
@@ -36,6 +37,13 @@ namespace meshquilt {
 
 class LatticeContacts;
 
+//! A mesh placed in space with what collision tests measure of it: its box and its face runs'.
+struct SpaceMesh {
+  TriMesh mesh;
+  Box3 box;
+  std::vector<Box3> runs;  //!< face_run_boxes(mesh)
+};
+
 //! An output element (or its part inside the plane), in plane coordinates.
 struct PlaneElement {
   TriMesh mesh;                  //!< no `elements` ids
@@ -44,6 +52,10 @@ struct PlaneElement {
   int32_t source = -1;           //!< index of the swatch element it was copied from (first copy)
   bool alive = true;             //!< false once removed
   bool changed = false;          //!< set by the step when its mesh changed
+  //! Where the whole element lies in space, when the driver knows it from before the patch (over
+  //! a curved base): collision tests take it while the element is unchanged, rather than placing
+  //! it again. Null: PatchRequest::to_space places it.
+  std::shared_ptr<const SpaceMesh> in_space;
 };
 
 //! A regular grid over the plane: cells of `cell` size from `origin`, nx x ny of them.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <random>
 #include <unordered_map>
@@ -16,6 +17,7 @@
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
 #include "quilt/lattice_copies.h"
+#include "quilt/quilt_policies.h"
 #include "quilt/swatch_lattice.h"
 #include "quilt/swatch_symmetry.h"
 #include "surface/direction_field.h"
@@ -35,6 +37,8 @@ struct SurfaceElement {
   // Its vertices in space (position_during_synthesis), filled when a patch first needs them as
   // an obstacle; a changed element is a new one, so they never go stale.
   std::vector<Vec3> in_space;
+  // The whole element in space for collision tests, made when a patch first holds it whole.
+  std::shared_ptr<const SpaceMesh> placed;
 };
 
 void update_bounds(SurfaceElement& e, const BaseSurface& base) {
@@ -296,18 +300,37 @@ class SurfaceDriver {
       if (!any_pinned) plane.pinned.clear();
       plane.bounds = xy_bounds(plane.mesh);
       plane.source = element.source;
+      if (!any_pinned) plane.in_space = placed_in_space(element);
       part.plane_positions = plane.mesh.positions;
       layer.push_back(std::move(plane));
       parts.push_back(std::move(part));
     }
   }
 
-  // The faces of an element outside its part, in space, less those at the seam: they touch the
-  // part at its pinned vertices, and as an obstacle would refuse every change to it there.
-  TriMesh rest_in_space(SurfaceElement& element, const ElementPart& part) const {
+  // The whole element in space, placed once: each patch around it tests collisions against it.
+  std::shared_ptr<const SpaceMesh> placed_in_space(SurfaceElement& element) const {
+    if (!element.placed) {
+      fill_in_space(element);
+      auto placed = std::make_shared<SpaceMesh>();
+      placed->mesh.positions = element.in_space;
+      placed->mesh.triangles = element.triangles;
+      placed->box = bounding_box(placed->mesh.positions);
+      placed->runs = face_run_boxes(placed->mesh);
+      element.placed = std::move(placed);
+    }
+    return element.placed;
+  }
+
+  void fill_in_space(SurfaceElement& element) const {
     if (element.in_space.empty())
       for (const LocalVertex& lv : element.vertices)
         element.in_space.push_back(embedding_->position_during_synthesis(lv.point, lv.height));
+  }
+
+  // The faces of an element outside its part, in space, less those at the seam: they touch the
+  // part at its pinned vertices, and as an obstacle would refuse every change to it there.
+  TriMesh rest_in_space(SurfaceElement& element, const ElementPart& part) const {
+    fill_in_space(element);
     std::vector<uint8_t> on_part(element.vertices.size(), 0);
     for (size_t f = 0; f < element.triangles.size(); ++f)
       if (part.face_in_part[f])
