@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
 
 #include "core/error.h"
 #include "mesh/measures.h"
@@ -252,59 +253,77 @@ class SurfaceDriver {
     Box3 reach = bounding_box(patch_points);
     reach.lo -= Vec3(2.0 * shell_);
     reach.hi += Vec3(2.0 * shell_);
-    for (size_t e = 0; e < elements_.size(); ++e) {
-      if (!alive_[e]) continue;
-      SurfaceElement& element = elements_[e];
-      if (!element.bounds.overlaps(reach)) continue;
-      std::vector<uint8_t> vertex_in(element.vertices.size());
-      for (size_t v = 0; v < element.vertices.size(); ++v)
-        vertex_in[v] = patch.face_index(element.vertices[v].point.face) >= 0;
-      ElementPart part;
-      part.element = static_cast<int32_t>(e);
-      part.face_in_part.assign(element.triangles.size(), 0);
-      std::vector<int32_t> part_vertex(element.vertices.size(), -1);
-      std::vector<uint8_t> used_outside(element.vertices.size(), 0);
-      PlaneElement plane;
-      for (size_t f = 0; f < element.triangles.size(); ++f) {
-        const Tri& t = element.triangles[f];
-        const bool inside = vertex_in[t[0]] && vertex_in[t[1]] && vertex_in[t[2]];
-        if (!inside) {
-          for (int32_t v : t) used_outside[v] = 1;
-          continue;
-        }
-        part.face_in_part[f] = 1;
-        Tri local;
-        for (int k = 0; k < 3; ++k) {
-          int32_t& index = part_vertex[t[k]];
-          if (index < 0) {
-            index = static_cast<int32_t>(plane.mesh.positions.size());
-            const LocalVertex& lv = element.vertices[t[k]];
-            plane.mesh.positions.push_back(Vec3(patch.to_plane(lv.point), lv.height / height_unit_));
-            if (!element.origins.empty()) plane.mesh.origins.push_back(element.origins[t[k]]);
-            part.element_vertex.push_back(t[k]);
-          }
-          local[k] = index;
-        }
-        plane.mesh.triangles.push_back(local);
-      }
-      if (std::find(part.face_in_part.begin(), part.face_in_part.end(), 0) != part.face_in_part.end())
-        obstacles.push_back(rest_in_space(element, part));
-      if (plane.mesh.triangles.empty()) continue;
-      plane.pinned.assign(plane.mesh.positions.size(), 0);
-      bool any_pinned = false;
-      for (size_t k = 0; k < part.element_vertex.size(); ++k)
-        if (used_outside[part.element_vertex[k]]) {
-          plane.pinned[k] = 1;
-          any_pinned = true;
-        }
-      if (!any_pinned) plane.pinned.clear();
-      plane.bounds = xy_bounds(plane.mesh);
-      plane.source = element.source;
-      if (!any_pinned) plane.in_space = placed_in_space(element);
-      part.plane_positions = plane.mesh.positions;
-      layer.push_back(std::move(plane));
-      parts.push_back(std::move(part));
+    std::vector<size_t> near;
+    for (size_t e = 0; e < elements_.size(); ++e)
+      if (alive_[e] && elements_[e].bounds.overlaps(reach)) near.push_back(e);
+    // Each element's part is its own: gathered side by side, then kept in element order.
+    std::vector<CollectedPart> collected(near.size());
+    tbb::parallel_for(size_t{0}, near.size(), [&](size_t k) { collected[k] = collect_part(patch, near[k]); });
+    for (CollectedPart& c : collected) {
+      if (c.obstacle) obstacles.push_back(std::move(*c.obstacle));
+      if (c.plane.mesh.triangles.empty()) continue;
+      layer.push_back(std::move(c.plane));
+      parts.push_back(std::move(c.part));
     }
+  }
+
+  // An element's part inside a patch, in its plane, and the rest of it in space.
+  struct CollectedPart {
+    PlaneElement plane;
+    ElementPart part;
+    std::optional<TriMesh> obstacle;
+  };
+
+  CollectedPart collect_part(const SurfacePatch& patch, size_t e) {
+    SurfaceElement& element = elements_[e];
+    CollectedPart out;
+    std::vector<uint8_t> vertex_in(element.vertices.size());
+    for (size_t v = 0; v < element.vertices.size(); ++v)
+      vertex_in[v] = patch.face_index(element.vertices[v].point.face) >= 0;
+    ElementPart& part = out.part;
+    part.element = static_cast<int32_t>(e);
+    part.face_in_part.assign(element.triangles.size(), 0);
+    std::vector<int32_t> part_vertex(element.vertices.size(), -1);
+    std::vector<uint8_t> used_outside(element.vertices.size(), 0);
+    PlaneElement& plane = out.plane;
+    for (size_t f = 0; f < element.triangles.size(); ++f) {
+      const Tri& t = element.triangles[f];
+      const bool inside = vertex_in[t[0]] && vertex_in[t[1]] && vertex_in[t[2]];
+      if (!inside) {
+        for (int32_t v : t) used_outside[v] = 1;
+        continue;
+      }
+      part.face_in_part[f] = 1;
+      Tri local;
+      for (int k = 0; k < 3; ++k) {
+        int32_t& index = part_vertex[t[k]];
+        if (index < 0) {
+          index = static_cast<int32_t>(plane.mesh.positions.size());
+          const LocalVertex& lv = element.vertices[t[k]];
+          plane.mesh.positions.push_back(Vec3(patch.to_plane(lv.point), lv.height / height_unit_));
+          if (!element.origins.empty()) plane.mesh.origins.push_back(element.origins[t[k]]);
+          part.element_vertex.push_back(t[k]);
+        }
+        local[k] = index;
+      }
+      plane.mesh.triangles.push_back(local);
+    }
+    if (std::find(part.face_in_part.begin(), part.face_in_part.end(), 0) != part.face_in_part.end())
+      out.obstacle = rest_in_space(element, part);
+    if (plane.mesh.triangles.empty()) return out;
+    plane.pinned.assign(plane.mesh.positions.size(), 0);
+    bool any_pinned = false;
+    for (size_t k = 0; k < part.element_vertex.size(); ++k)
+      if (used_outside[part.element_vertex[k]]) {
+        plane.pinned[k] = 1;
+        any_pinned = true;
+      }
+    if (!any_pinned) plane.pinned.clear();
+    plane.bounds = xy_bounds(plane.mesh);
+    plane.source = element.source;
+    if (!any_pinned) plane.in_space = placed_in_space(element);
+    part.plane_positions = plane.mesh.positions;
+    return out;
   }
 
   // The whole element in space, placed once: each patch around it tests collisions against it.
