@@ -26,7 +26,7 @@ bool near(const Rect2& a, const Rect2& b, double tolerance) {
 
 }  // namespace
 
-bool same_element(const TriMesh& a, const TriMesh& b, double tolerance) {
+bool same_element(const TriMesh& a, const TriMesh& b, double tolerance, const Vec3& offset) {
   if (a.triangles.size() != b.triangles.size() || a.positions.size() != b.positions.size()) return false;
   // A part collected from a surface numbers its vertices as its faces first use them.
   std::vector<int32_t> to_b(a.positions.size(), -1), to_a(b.positions.size(), -1);
@@ -34,7 +34,7 @@ bool same_element(const TriMesh& a, const TriMesh& b, double tolerance) {
     for (int k = 0; k < 3; ++k) {
       const int32_t va = a.triangles[f][k], vb = b.triangles[f][k];
       if (to_b[va] < 0 && to_a[vb] < 0) {
-        if (!near(a.positions[va], b.positions[vb], tolerance)) return false;
+        if (!near(a.positions[va], b.positions[vb] + offset, tolerance)) return false;
         to_b[va] = vb;
         to_a[vb] = va;
       } else if (to_b[va] != vb || to_a[vb] != va) {
@@ -73,9 +73,7 @@ bool pattern_copy(const TriMesh& mesh, const TriMesh& source, const glm::dvec2& 
   const glm::dvec2 shift = glm::dvec2(d.x, d.y) - translation;
   const glm::dvec2 period = nearest_period(shift, periods);
   if (glm::distance(shift, period) > tolerance) return false;
-  TriMesh moved = source;
-  for (Vec3& p : moved.positions) p += Vec3(d.x, d.y, 0.0);
-  if (!same_element(mesh, moved, tolerance)) return false;
+  if (!same_element(mesh, source, tolerance, Vec3(d.x, d.y, 0.0))) return false;
   k = glm::i64vec2(glm::round(lattice_coordinates(period, periods)));
   return true;
 }
@@ -94,7 +92,7 @@ LatticeContacts::LatticeContacts(const QuiltSwatch& swatch, const std::array<glm
 LatticeContacts::~LatticeContacts() = default;
 
 bool LatticeContacts::touches(int32_t a, int32_t b, const glm::i64vec2& k) {
-  const std::string key = std::to_string(a) + ' ' + std::to_string(b) + ' ' + std::to_string(k.x) + ' ' + std::to_string(k.y);
+  const Key key{a, b, k.x, k.y};
   if (const auto it = known_.find(key); it != known_.end()) return it->second;
   if (!faces_[b]) faces_[b] = std::make_unique<Faces>(swatch_.elements[b]);
   const Faces& to = *faces_[b];

@@ -7,9 +7,9 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
-#include <string>
-#include <unordered_map>
+#include <tuple>
 #include <vector>
 
 #include <glm/gtc/type_precision.hpp>
@@ -19,9 +19,10 @@
 
 namespace meshquilt {
 
-//! Whether `a` and `b` are one element: the same triangles in the same order, up to a renumbering
-//! of vertices, and each vertex of `a` within `tolerance` of its vertex of `b` (in every axis).
-bool same_element(const TriMesh& a, const TriMesh& b, double tolerance);
+//! Whether `a` and `b` moved by `offset` are one element: the same triangles in the same order, up
+//! to a renumbering of vertices, and each vertex of `a` within `tolerance` of its vertex of `b`
+//! (in every axis).
+bool same_element(const TriMesh& a, const TriMesh& b, double tolerance, const Vec3& offset = Vec3(0.0));
 
 //! For each input, the alive, whole (unpinned) layer element among `candidates` that it is
 //! (same_element), or -1. Each layer element stands for at most one input.
@@ -51,7 +52,8 @@ class LatticeContacts {
   std::array<glm::dvec2, 2> periods_;
   double reach_;
   std::vector<std::unique_ptr<Faces>> faces_;  // per swatch element, built when first asked
-  std::unordered_map<std::string, bool> known_;
+  using Key = std::tuple<int32_t, int32_t, int64_t, int64_t>;  // a, b, k
+  std::map<Key, bool> known_;
 };
 
 //! For each of `candidates`, 1 where the layer element is an unchanged copy of its swatch element

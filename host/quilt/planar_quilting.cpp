@@ -92,12 +92,7 @@ glm::dvec2 lattice_phase(const QuiltSwatch& swatch, const SwatchLattice& lattice
 // candidates' range: the best of them by matching, and as they are, since a refined placement
 // would leave the lattice.
 void place_on_lattice(const SwatchLattice& lattice, const glm::dvec2& phase, double cell, PatchRequest& request) {
-  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-  for (const glm::dvec2& t : request.candidates) {
-    lo = glm::min(lo, t);
-    hi = glm::max(hi, t);
-  }
-  std::vector<glm::dvec2> placements = lattice_placements(lo, hi, -phase, lattice.basis, 1e-9 * cell);
+  std::vector<glm::dvec2> placements = lattice_placements(request.candidates, -phase, lattice.basis, 1e-9 * cell);
   if (placements.empty()) return;
   request.candidates = std::move(placements);
   request.refine = false;

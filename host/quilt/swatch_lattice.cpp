@@ -320,8 +320,13 @@ std::optional<SwatchLattice> swatch_lattice(const QuiltSwatch& swatch, int symme
   return lattice;
 }
 
-std::vector<glm::dvec2> lattice_placements(const glm::dvec2& lo, const glm::dvec2& hi, const glm::dvec2& shift,
+std::vector<glm::dvec2> lattice_placements(const std::vector<glm::dvec2>& candidates, const glm::dvec2& shift,
                                            const std::array<glm::dvec2, 2>& basis, double slack) {
+  glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+  for (const glm::dvec2& t : candidates) {
+    lo = glm::min(lo, t);
+    hi = glm::max(hi, t);
+  }
   // The box's corners in lattice coordinates bound the periods to try.
   glm::dvec2 k_lo(std::numeric_limits<double>::max()), k_hi(std::numeric_limits<double>::lowest());
   for (const glm::dvec2& c : {lo, hi, glm::dvec2(lo.x, hi.y), glm::dvec2(hi.x, lo.y)}) {

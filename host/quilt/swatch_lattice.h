@@ -36,11 +36,11 @@ glm::dvec2 lattice_coordinates(const glm::dvec2& p, const std::array<glm::dvec2,
 //! same way whatever the floating-point environment.
 glm::dvec2 nearest_period(const glm::dvec2& p, const std::array<glm::dvec2, 2>& basis);
 
-//! The translations t within the box [lo, hi] for which t + shift is a period of `basis` (within
-//! `slack` of the box); where none lies within, the one whose t + shift is the period nearest the
-//! box's centre. Empty where the box holds more than 1e5 periods (a lattice finer than the
-//! placements it would choose among).
-std::vector<glm::dvec2> lattice_placements(const glm::dvec2& lo, const glm::dvec2& hi, const glm::dvec2& shift,
+//! The translations t within the bounding box of `candidates` for which t + shift is a period of
+//! `basis` (within `slack` of the box); where none lies within, the one whose t + shift is the
+//! period nearest the box's centre. Empty where the box holds more than 1e5 periods (a lattice
+//! finer than the placements it would choose among).
+std::vector<glm::dvec2> lattice_placements(const std::vector<glm::dvec2>& candidates, const glm::dvec2& shift,
                                            const std::array<glm::dvec2, 2>& basis, double slack);
 
 }  // namespace meshquilt

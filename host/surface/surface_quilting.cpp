@@ -202,13 +202,8 @@ class SurfaceDriver {
   // it starts the pattern there.
   void place_on_lattice(const SurfacePatch& patch, PatchRequest& request) {
     if (!lattice_ || !layout_ || !layout_->layout().on_lattice || patch.chart != PatchChart::layout_window) return;
-    glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-    for (const glm::dvec2& t : request.candidates) {
-      lo = glm::min(lo, t);
-      hi = glm::max(hi, t);
-    }
     const glm::dvec2 shift = patch.origin + lattice_->centre;  // t + shift must be a period
-    std::vector<glm::dvec2> placements = lattice_placements(lo, hi, shift, lattice_->basis, 1e-9 * cell_);
+    std::vector<glm::dvec2> placements = lattice_placements(request.candidates, shift, lattice_->basis, 1e-9 * cell_);
     // A lattice finer than the candidates' spacing by far would list more placements than there
     // are inputs to place: the candidates stay as matching chose them.
     if (placements.empty()) return;
