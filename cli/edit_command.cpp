@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "repair_report.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
@@ -116,7 +117,9 @@ void run_edit(const EditArgs& args) {
   if (texture_in) {
     texture = read_texture_file(args.input);
     if (!args.base.empty()) {
-      const TriMesh base = prepare_base(read_mesh(args.base), args.base);
+      MeshRepairs repairs;
+      const TriMesh base = prepare_base(read_mesh(args.base), args.base, &repairs);
+      say_repairs(args.base, repairs, "parts");
       check_texture_base(texture, base, args.base);
       mesh = place_texture(texture, base, args.embed, args.input).mesh;
       mesh.origins.clear();

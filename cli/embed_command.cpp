@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "repair_report.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
@@ -43,7 +44,9 @@ void run_embed(const EmbedArgs& args) {
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
   const QuiltTexture texture = read_texture_file(args.texture);
-  const TriMesh base = prepare_base(read_mesh(args.base), args.base);
+  MeshRepairs repairs;
+  const TriMesh base = prepare_base(read_mesh(args.base), args.base, &repairs);
+  say_repairs(args.base, repairs, "parts");
   check_texture_base(texture, base, args.base);
   PlacedTexture placed = place_texture(texture, base, args.embed, args.texture);
   if (!args.provenance) placed.mesh.origins.clear();

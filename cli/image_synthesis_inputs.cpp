@@ -1,3 +1,4 @@
+#include "repair_report.h"
 #include "image_synthesis_inputs.h"
 
 #include <cstdio>
@@ -24,7 +25,9 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   check_writable(output);
   if (!stats.empty()) check_writable(stats);
   ImageSynthesisInputs in;
-  in.base = prepare_base(read_mesh(base), base);
+  MeshRepairs repairs;
+  in.base = prepare_base(read_mesh(base), base, &repairs);
+  say_repairs(base, repairs, "parts");
   if (!image.empty()) in.sample = read_colour_image(image);
   if (!image.empty() && sample_width > 0) in.sample = shrunk_to_width(in.sample, sample_width);
   if (!field.empty()) in.constraints = read_field_file(field, in.base);

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "inspect/inspect_report.h"
 #include "mesh/mesh_io.h"
+#include "mesh/swatch_frame.h"
 
 namespace meshquilt::cli {
 namespace {
@@ -73,7 +74,8 @@ void add_inspect_command(CLI::App& app) {
   cmd->callback([args, shell] {
     const TriMesh mesh = read_mesh(args->mesh);
     std::optional<TriMesh> swatch, base_mesh;
-    if (!args->swatch.empty()) swatch = read_mesh(args->swatch);
+    // The swatch as synth reads it: repaired and turned into its frame.
+    if (!args->swatch.empty()) swatch = orient_swatch(read_mesh(args->swatch), args->swatch.string());
     if (!args->base.empty()) base_mesh = read_mesh(args->base);
     InspectOptions options;
     options.plane = args->plane;

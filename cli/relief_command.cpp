@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 
+#include "repair_report.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
@@ -33,7 +34,9 @@ namespace {
 // The model's detail over its region as the sample, sized as an image sample is (--scale or
 // --pixels-per-unit), its heights scaled as its widths are unless --height is given.
 nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, bool height_given, bool ppu_given) {
-  const TriMesh model = prepare_base(read_mesh(args.model), args.model);
+  MeshRepairs repairs;
+  const TriMesh model = prepare_base(read_mesh(args.model), args.model, &repairs);
+  say_repairs(args.model, repairs, "parts");
   if (!args.region.empty() && args.region.size() != 4)
     throw InputError("--region: expected X,Y,Z,RADIUS in model units", ErrorKind::invalid_option);
   std::optional<DetailRegion> region;

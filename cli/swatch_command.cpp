@@ -283,9 +283,20 @@ void add_check(CLI::App* parent) {
       "border, thin along z");
   auto file = std::make_shared<std::filesystem::path>();
   cmd->add_option("FILE", *file, "swatch mesh to check (.ply .obj .off .stl)")->required();
-  cmd->callback([file] {
+  auto repair = std::make_shared<std::filesystem::path>();
+  cmd->add_option("--repair", *repair, "write the swatch as synth repairs it on reading to this file");
+  cmd->callback([file, repair] {
     const std::string name = file->string();
     const SwatchCheck check = check_swatch(read_mesh(*file), name);
+    if (check.repairs.any())
+      std::cout << name << ": repaired on reading (synth does the same): " << check.repairs.describe("elements")
+                << (repair->empty() ? "; --repair OUT writes the repaired swatch" : "") << "\n";
+    if (!repair->empty()) {
+      TriMesh repaired = check.repaired;
+      repaired.origins.clear();  // the file's own numbering, not a quilt's provenance
+      write_mesh(repaired, *repair);
+      std::cout << name << ": wrote the repaired swatch to " << repair->string() << "\n";
+    }
     for (const std::string& finding : check.findings) std::cout << name << ": " << finding << "\n";
     if (!check.findings.empty()) {
       std::cout.flush();

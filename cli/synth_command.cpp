@@ -22,6 +22,7 @@
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"
 #include "progress.h"
+#include "repair_report.h"
 #include "resource_limits.h"
 #include "signals.h"
 #include "synth_command.h"
@@ -242,11 +243,15 @@ void run_synth(const SynthArgs& args) {
 
   const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
   // Oriented here as well as in the drivers, so a degenerate swatch is reported by file name.
-  const TriMesh swatch = orient_swatch(args.swatch.empty() ? default_swatch() : read_mesh(args.swatch), swatch_name);
+  MeshRepairs swatch_repairs, base_repairs;
+  const TriMesh swatch =
+      orient_swatch(args.swatch.empty() ? default_swatch() : read_mesh(args.swatch), swatch_name, &swatch_repairs);
+  say_repairs(swatch_name, swatch_repairs, "elements");
   TriMesh base;
   std::vector<FieldConstraint> constraints;
   if (curved) {
-    base = prepare_base(read_mesh(args.base), args.base);
+    base = prepare_base(read_mesh(args.base), args.base, &base_repairs);
+    say_repairs(args.base, base_repairs, "parts");
     if (!args.field.empty()) constraints = read_field_file(args.field, base);
   } else {
     check_synth_memory(swatch, width, height);
@@ -272,6 +277,13 @@ void run_synth(const SynthArgs& args) {
                              : synth_planar(swatch, width, height, *device, common);
   TriMesh& result = synth.mesh;
   nlohmann::json& summary = synth.summary;
+  // An empty file would pass for a result: say why there is none instead.
+  if (result.num_faces() == 0)
+    throw InputError(swatch_name + ": nothing was quilted: " +
+                         (curved ? "no element fits " + args.base + " at --scale " + std::to_string(args.scale) +
+                                       " (try a smaller --scale)"
+                                 : "every element was dropped (open, folded or intersecting; see swatch check)"),
+                     ErrorKind::invalid_option);
 
   const auto write_start = Clock::now();
   check_interrupted();
@@ -290,6 +302,8 @@ void run_synth(const SynthArgs& args) {
   for (int32_t e : result.elements) elements = std::max(elements, e + 1);
   summary["output"] = output.string();
   summary["swatch"] = swatch_name;
+  summary["repairs"]["swatch"] = repairs_json(swatch_repairs);
+  if (curved) summary["repairs"]["base"] = repairs_json(base_repairs);
   summary["faces"] = result.num_faces();
   summary["vertices"] = result.num_vertices();
   summary["elements"] = elements;

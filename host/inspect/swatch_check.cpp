@@ -31,10 +31,12 @@ std::string plural(int64_t n, const std::string& one, const std::string& many) {
 }  // namespace
 
 SwatchCheck check_swatch(const TriMesh& swatch, const std::string& source, const SwatchCheckOptions& options) {
-  TriMesh mesh = weld_vertices(swatch, options.weld_tolerance);
-  mesh.elements.clear();  // elements are the connected components, as synth splits them
-  if (mesh.num_faces() == 0) throw InputError(source + ": no faces left after welding coincident vertices");
   SwatchCheck check;
+  RepairedMesh repaired = repair_mesh(swatch, source, options.weld_tolerance);
+  check.repairs = repaired.repairs;
+  check.repaired = repaired.mesh;
+  TriMesh mesh = std::move(repaired.mesh);
+  mesh.elements.clear();  // elements are the connected components, as synth splits them
   const ElementTopology topology = element_topology(mesh);
   check.elements = topology.elements;
   check.open_elements = topology.elements - topology.closed_elements;

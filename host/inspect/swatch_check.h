@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_repair.h"
 #include "mesh/topology.h"
 #include "mesh/tri_mesh.h"
 
@@ -29,15 +30,17 @@ struct SwatchCheck {
   double thickness_ratio = 0.0;         //!< z extent / the shorter x-y side
   bool thin_along_z = true;             //!< z is the thinnest axis and thickness_ratio is small enough
 
+  MeshRepairs repairs;  //!< what reading it as synth does repaired (mesh/mesh_repair.h)
+  TriMesh repaired;     //!< the swatch after those repairs, in its own frame
+
   //! One line per problem found (no file name), in the order open, cut, intersecting, thickness;
   //! empty when the swatch will quilt well.
   std::vector<std::string> findings;
 };
 
-//! Checks `swatch` (welded here; not modified) with the element topology and intersection tests
-//! of `meshquilt inspect`; `source` names it in messages.
-//! \throw InputError "SOURCE: no faces ..." when no faces are left after welding;
-//!        DeviceError/SolverError from the BVH.
+//! Checks `swatch` as synth reads it (repaired by repair_mesh, the repairs counted) with the element
+//! topology and intersection tests of `meshquilt inspect`; `source` names it in messages.
+//! \throw InputError(invalid_mesh) for repair_mesh's refusals; DeviceError/SolverError from the BVH.
 SwatchCheck check_swatch(const TriMesh& swatch, const std::string& source, const SwatchCheckOptions& options = {});
 
 }  // namespace meshquilt

@@ -5,20 +5,20 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_repair.h"
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
 
-//! Returns `mesh` ready to carry a texture: coincident vertices welded (kWeldTolerance), faces
-//! that collapse dropped, each connected component's faces oriented consistently (flipped by a
-//! breadth-first walk from its first face) and outward: for a closed component a positive signed
-//! volume, for an open one a positive volume of the cone from its area centroid (a scan open at
-//! the neck faces out); an open component flat to within 1e-3 of its area x radius keeps the
-//! orientation of its first face. Open components, several components and any genus are
-//! accepted. `elements` is cleared. `source` names the mesh in messages.
-//! \throw InputError(invalid_mesh) "SOURCE: problem" for no faces, NaN/Inf, indices out of range,
-//!        an edge shared by more than two faces after welding, or a non-orientable component.
-TriMesh prepare_base(const TriMesh& mesh, const std::string& source);
+//! Returns `mesh` ready to carry a texture: repaired by repair_mesh (welded, unused vertices and
+//! collapsed, duplicate and zero-area faces dropped, T-junctions closed, pinched vertices split,
+//! each part wound coherently and outward), its `repairs` stored when asked. Open components,
+//! several components and any genus are accepted. `elements` is cleared. `source` names the mesh
+//! in messages.
+//! \throw InputError(invalid_mesh) "SOURCE: problem" for repair_mesh's refusals, a mesh whose
+//!        faces all lie on lines, and a part lying more than 10 of its diagonals away from the
+//!        largest part (a stray face an exporter left).
+TriMesh prepare_base(const TriMesh& mesh, const std::string& source, MeshRepairs* repairs = nullptr);
 
 //! For each vertex of prepare_base(mesh), the raw vertex of `mesh` it came from (the earliest of
 //! those welded into it), so that later frames of an animated base (same raw vertices and faces)

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "mesh/measures.h"
+#include "mesh/topology.h"
 #include "mesh/validation.h"
 
 namespace meshquilt {
@@ -20,7 +21,9 @@ void check_swatch_proportions(const TriMesh& swatch, const std::string& source) 
   auto vertex_text = [&](size_t v) {
     char buffer[160];
     const Vec3& p = swatch.positions[v];
-    std::snprintf(buffer, sizeof(buffer), "vertex %zu at (%.3g, %.3g, %.3g)", v, p.x, p.y, p.z);
+    // Named as the file numbers it: a repaired swatch carries its file's order in origins.
+    const size_t named = swatch.origins.size() == swatch.positions.size() ? swatch.origins[v] : v;
+    std::snprintf(buffer, sizeof(buffer), "vertex %zu at (%.3g, %.3g, %.3g)", named, p.x, p.y, p.z);
     return std::string(buffer);
   };
   // Float kernels square coordinates measured in edge lengths; beyond this nothing is a swatch.
@@ -86,8 +89,10 @@ int thinnest_axis(const Vec3& extent) {
   return extent.x <= extent.y ? 0 : 1;
 }
 
-TriMesh orient_swatch(const TriMesh& swatch, const std::string& source) {
-  validate_mesh(swatch, source);
+TriMesh orient_swatch(const TriMesh& input, const std::string& source, MeshRepairs* repairs) {
+  RepairedMesh repaired = repair_mesh(input, source, kWeldTolerance);
+  if (repairs) *repairs = repaired.repairs;
+  const TriMesh& swatch = repaired.mesh;
   // First: a stray vertex also spoils the thickness test below, whose message would mislead.
   check_swatch_proportions(swatch, source);
   const Box3 box = bounding_box(swatch.positions);
@@ -107,7 +112,7 @@ TriMesh orient_swatch(const TriMesh& swatch, const std::string& source) {
   }
   if (!(extent[axis_x] > 0.0) || !(extent[axis_y] > 0.0)) fail("zero extent in the x-y plane");
 
-  TriMesh out = swatch;
+  TriMesh out = std::move(repaired.mesh);
   for (Vec3& p : out.positions) {
     const Vec3 q = p - low;
     p = Vec3(q[axis_x], q[axis_y], q[height]);

@@ -4,19 +4,21 @@
 
 #include <string>
 
+#include "mesh/mesh_repair.h"
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
 
-//! Returns `swatch` turned so its thinnest bounding-box axis becomes z, and moved so its
-//! bounding-box minimum is the origin. The turn is a proper rotation (a cyclic permutation of the
-//! axes), so triangle orientation and the sign of enclosed volumes are kept. Ties keep z, then
-//! prefer x over y as the height axis. `elements` is copied unchanged.
-//! `source` names the swatch in messages.
-//! \throw InputError(invalid_mesh) "SOURCE: problem" when validate_mesh fails, and
+//! Returns `swatch` repaired (repair_mesh: welded, bad faces dropped, T-junctions closed, each
+//! element wound coherently and outward; the counts stored in `repairs` when asked), turned so
+//! its thinnest bounding-box axis becomes z, and moved so its bounding-box minimum is the origin.
+//! The turn is a proper rotation (a cyclic permutation of the axes), so triangle orientation and
+//! the sign of enclosed volumes are kept. Ties keep z, then prefer x over y as the height axis.
+//! `elements` follows the faces. `source` names the swatch in messages.
+//! \throw InputError(invalid_mesh) "SOURCE: problem" for repair_mesh's refusals, and
 //!        "SOURCE: degenerate swatch: ..." when the thickness is below 1e-9 x the bounding-box
 //!        diagonal, an x-y extent is zero, or check_swatch_proportions refuses it.
-TriMesh orient_swatch(const TriMesh& swatch, const std::string& source);
+TriMesh orient_swatch(const TriMesh& swatch, const std::string& source, MeshRepairs* repairs = nullptr);
 
 //! Largest coordinate magnitude a swatch may have.
 constexpr double kMaxSwatchCoordinate = 1e15;

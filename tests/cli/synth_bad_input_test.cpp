@@ -71,7 +71,7 @@ const char* kBaseTetrahedron = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\
 TEST_F(SynthBadInput, NonManifoldBase) {
   // Three triangles on the edge (0, 1).
   const auto base = swatch("fan.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
-  expect_failure("--base " + base.string(), 5, "fan.off: non-manifold base");
+  expect_failure("--base " + base.string(), 5, "fan.off: non-manifold edge shared by 3 faces (faces 0, 1, 2)");
 }
 
 TEST_F(SynthBadInput, EmptyBase) {

@@ -11,9 +11,11 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "mesh/base_mesh.h"
 #include "mesh/memory_budget.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
+#include "mesh/topology.h"
 #include "mesh/validation.h"
 #include "surface/conformal_patch.h"
 #include "surface/guidance_field.h"
@@ -52,6 +54,22 @@ inline void swatch_body(const uint8_t* data, size_t size) {
     const TriMesh mesh = parse_mesh(as_text(data + 1, size - 1), extensions[data[0] % 4], "fuzz");
     const TriMesh oriented = orient_swatch(mesh, "fuzz");
     validate_mesh(oriented, "fuzz");
+  } catch (const InputError&) {
+  } catch (const IoError&) {
+  }
+}
+
+// The base loader: the first byte picks the format, the rest is the file; then the repairs and
+// refusals of prepare_base as `synth --base` runs them. What it returns must be a valid mesh
+// with every edge shared by at most two faces.
+inline void base_body(const uint8_t* data, size_t size) {
+  if (size == 0) return;
+  static const char* extensions[] = {".obj", ".ply", ".off", ".stl"};
+  try {
+    const TriMesh mesh = parse_mesh(as_text(data + 1, size - 1), extensions[data[0] % 4], "fuzz");
+    const TriMesh base = prepare_base(mesh, "fuzz");
+    validate_mesh(base, "fuzz");
+    if (inspect_surface(base).nonmanifold_edges != 0 || inspect_surface(base).misoriented_edges != 0) __builtin_trap();
   } catch (const InputError&) {
   } catch (const IoError&) {
   }

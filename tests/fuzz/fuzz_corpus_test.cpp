@@ -35,6 +35,7 @@ TEST(FuzzCorpus, Ply) { replay("ply", ply_body); }
 TEST(FuzzCorpus, Off) { replay("off", off_body); }
 TEST(FuzzCorpus, Stl) { replay("stl", stl_body); }
 TEST(FuzzCorpus, Swatch) { replay("swatch", swatch_body); }
+TEST(FuzzCorpus, Base) { replay("base", base_body); }
 TEST(FuzzCorpus, Netpbm) { replay("netpbm", netpbm_body); }
 TEST(FuzzCorpus, Field) { replay("field", field_body); }
 TEST(FuzzCorpus, Texture) { replay("texture", texture_body); }

@@ -130,6 +130,14 @@ for target, files in meshes.items():
 for index, target in enumerate(["obj", "ply", "off", "stl"]):
     for name, data in meshes[target][:3]:
         put("swatch", name, bytes([index]) + (data if isinstance(data, bytes) else data.encode()))
+# The base target: the same, and bases as exporters spoil them (prepare_base repairs these).
+for index, target in enumerate(["obj", "ply", "off", "stl"]):
+    for name, data in meshes[target][:3]:
+        put("base", name, bytes([index]) + (data if isinstance(data, bytes) else data.encode()))
+put("base", "flipped_face.off", bytes([2]) + off(V, [F[0], F[1][::-1]] + list(F[2:])).encode())
+put("base", "duplicate_face.off", bytes([2]) + off(V, list(F) + [F[0]]).encode())
+put("base", "t_junction.off", bytes([2]) + "OFF\n6 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.5 0 0\n5 5 5\n"
+    "3 0 2 4\n3 4 2 1\n3 0 4 3\n3 4 1 3\n3 1 2 3\n3 0 3 2\n3 0 1 4\n3 5 5 5\n".encode())
 
 put("netpbm", "p1.pbm", "P1\n# comment\n4 2\n0110\n1 0 0 1\n")
 put("netpbm", "p2.pgm", "P2\n3 2\n255\n0 128 255\n10 20 30\n")
