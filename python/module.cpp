@@ -392,7 +392,8 @@ PYBIND11_MODULE(_meshquilt, m) {
                            ErrorKind::invalid_option);
         TriMesh swatch =
             swatch_vertices ? mesh_from(*swatch_vertices, *swatch_faces, "swatch") : default_swatch();
-        swatch = orient_swatch(swatch, "swatch");
+        MeshRepairs swatch_repairs, base_repairs;
+        swatch = orient_swatch(swatch, "swatch", &swatch_repairs);
         if (plane &&
             !(plane->first > 0.0 && plane->second > 0.0 && plane->first <= 1000.0 && plane->second <= 1000.0))
           throw InputError("--plane: sizes must lie in (0, 1000]", ErrorKind::invalid_option);
@@ -408,7 +409,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         if (!curved && field_points)
           throw InputError("synth: a field needs base=(vertices, faces)", ErrorKind::invalid_option);
         TriMesh base;
-        if (curved) base = prepare_base(mesh_from(*base_vertices, *base_faces, "base"), "base");
+        if (curved) base = prepare_base(mesh_from(*base_vertices, *base_faces, "base"), "base", &base_repairs);
         const std::vector<FieldConstraint> constraints =
             field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
         Job job;
@@ -493,6 +494,9 @@ PYBIND11_MODULE(_meshquilt, m) {
         stats["faces"] = result.num_faces();
         stats["vertices"] = result.num_vertices();
         stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        for (const auto& [name, count] : swatch_repairs.counts()) stats["repairs"]["swatch"][name] = count;
+        if (curved)
+          for (const auto& [name, count] : base_repairs.counts()) stats["repairs"]["base"][name] = count;
         py::dict out = dict_of(result);
         out["stats"] = json_to_python(stats);
         if (!texture.empty()) out["texture"] = py::bytes(texture);

@@ -105,7 +105,8 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
     directions drawn over the base, each held at the base vertex nearest its point (synth's
     --field file with `point` entries); see `guidance`. `progress(share, seconds_left)` is called
     after each patch (seconds_left is -1 until something is covered); raising in it cancels the
-    job. The engine runs without the GIL."""
+    job. The engine runs without the GIL. Swatch and base are repaired as the command line repairs
+    files (winding, duplicates, T-junctions...); stats["repairs"] counts what was done."""
     if (plane is None) == (base is None):
         raise TypeError("synth: give plane=(width, height) or base=(vertices, faces)")
     sv = sf = bv = bf = None

@@ -105,6 +105,20 @@ def test_a_base_and_a_swatch_equal_the_command_line():
     assert np.array_equal(result.element, element)
 
 
+def test_a_swatch_and_base_wound_inward_are_repaired_as_the_command_line_repairs_them():
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    mail = meshquilt.swatch("chainmail", preset="small")
+    inward_base = (base[0], base[1][:, ::-1].copy())
+    inward_mail = (mail.vertices, mail.faces[:, ::-1].copy())
+    result = meshquilt.synth(inward_mail, base=inward_base, scale=0.3, seed=3, backend="cpu")
+    clean = meshquilt.synth(mail, base=base, scale=0.3, seed=3, backend="cpu")
+    repairs = result.stats["repairs"]
+    assert repairs["swatch"]["rewound_faces"] == len(mail.faces)
+    assert repairs["base"]["rewound_faces"] == len(base[1])
+    assert all(count == 0 for count in clean.stats["repairs"]["swatch"].values())
+    assert result.stats["faces"] > 0 and abs(result.stats["faces"] - clean.stats["faces"]) <= 0.2 * clean.stats["faces"]
+
+
 def test_a_drawn_field_equals_the_command_lines_field_file():
     base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
     points = np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]])
