@@ -188,7 +188,7 @@ int64_t close_t_junctions(Work& w, double tolerance) {
 // Undirected edge -> (face, local edge index) of the faces using it.
 using EdgeFaces = std::unordered_map<uint64_t, std::vector<std::pair<int32_t, int>>>;
 
-EdgeFaces edge_faces(const Work& w, const std::string& source) {
+EdgeFaces edge_faces(const Work& w, const std::string& source, int64_t welded) {
   const TriMesh& m = w.mesh;
   EdgeFaces faces;
   faces.reserve(m.triangles.size() * 2);
@@ -205,8 +205,11 @@ EdgeFaces edge_faces(const Work& w, const std::string& source) {
     std::string text;
     for (size_t i = 0; i < std::min<size_t>(named.size(), 4); ++i) text += (i ? ", " : "") + std::to_string(named[i]);
     if (named.size() > 4) text += ", ...";
+    // Welding makes such edges where coordinates lost their precision (floats far from the origin).
+    const std::string after =
+        welded > 0 ? " after welding " + std::to_string(welded) + " coincident vertices" : std::string();
     throw InputError(source + ": non-manifold edge shared by " + std::to_string(list.size()) + " faces (faces " +
-                     text + "): no safe repair; separate or delete the extra faces");
+                     text + ")" + after + ": no safe repair; separate or delete the extra faces");
   }
   return faces;
 }
@@ -398,9 +401,9 @@ RepairedMesh repair_mesh(const TriMesh& input, const std::string& source, double
   repairs.t_junctions = close_t_junctions(w, tolerance);
   drop_unused_vertices(m);
 
-  EdgeFaces faces = edge_faces(w, source);
+  EdgeFaces faces = edge_faces(w, source, repairs.welded_vertices);
   repairs.split_vertices = split_pinched_vertices(w, faces);
-  if (repairs.split_vertices > 0) faces = edge_faces(w, source);
+  if (repairs.split_vertices > 0) faces = edge_faces(w, source, repairs.welded_vertices);
   orient_parts(w, faces, source, repairs);
 
   if (!repairs.any()) {
