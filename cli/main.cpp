@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   meshquilt::cli::keep_freed_memory();
   CLI::App app{"meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "meshquilt " MESHQUILT_VERSION);
   meshquilt::cli::add_swatch_command(app);
   meshquilt::cli::add_inspect_command(app);
   meshquilt::cli::add_synth_command(app);
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "meshquilt: " << e.what() << " (see --help)\n";
