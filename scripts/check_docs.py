@@ -5,17 +5,23 @@ Usage:
   python3 scripts/check_docs.py MESHQUILT_BINARY REPO_ROOT
   python3 scripts/check_docs.py --self-test
 
-Fails (exit 1, one line per problem) when README.md has more than 200 lines, or when a long
+Fails (exit 1, one line per problem) when README.md has more than 200 lines; when a long
 option printed by `MESHQUILT --help` or by `MESHQUILT <sub> [<sub> ...] --help` for any
-subcommand (found in the "Subcommands:" section of CLI11's help) is missing from docs/cli.md.
-An option counts as documented when it appears inside backticks (a code span or a fenced block)
-in docs/cli.md. On success prints "docs check: N options documented, README L lines".
-Python 3 standard library only.
+subcommand (found in the "Subcommands:" section of CLI11's help) is missing from docs/cli.md;
+when a command is missing from docs/cli.md's list of commands (its first paragraph); when a key
+of the stats JSON that `synth --stats` writes over a plane and over data/sphere.off (top-level
+keys, stage names, repair counts) is missing from docs/cli.md; or when a string literal in
+host/ names a command-line flag (library messages say {name}; the front ends spell it).
+An option or key counts as documented when it appears inside backticks (a code span or a fenced
+block) in docs/cli.md. On success prints "docs check: N options documented, K stats keys,
+README L lines". Python 3 standard library only.
 """
 
+import json
 import re
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 README_MAX_LINES = 200
@@ -121,6 +127,67 @@ def check(help_of, root):
     return problems, len(found), readme_lines
 
 
+# A string literal holding a long option, outside comments.
+FLAG_LITERAL = re.compile(r'"[^"\n]*--[a-z][^"\n]*"')
+
+
+def flag_literals(path, text):
+    """'PATH:LINE: ...' for each string literal in `text` that names a flag."""
+    found = []
+    for number, line in enumerate(text.splitlines(), 1):
+        code = line.split("//", 1)[0]
+        if FLAG_LITERAL.search(code):
+            found.append("%s:%d: a string names a flag (write {name}; the front end spells it): %s"
+                         % (path, number, line.strip()))
+    return found
+
+
+def code_words(markdown):
+    """Identifiers appearing inside backticks (code spans and fenced blocks)."""
+    words = set()
+    spans = re.findall(r"```.*?```|`[^`\n]+`", markdown, flags=re.S)
+    for span in spans:
+        words.update(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", span))
+    return words
+
+
+def stats_keys(binary, root):
+    """Keys `synth --stats` writes over a plane and over data/sphere.off: top level, stages and
+    repair counts."""
+    keys = set()
+    with tempfile.TemporaryDirectory() as folder:
+        for where in (["--plane", "1x1"], ["--base", str(root / "data" / "sphere.off"), "--scale", "0.5"]):
+            stats = Path(folder) / "stats.json"
+            command = [binary, "synth", *where, "--progress", "none", "--backend", "cpu", "--stats", str(stats),
+                       "-o", str(Path(folder) / "out.ply")]
+            run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=300)
+            if run.returncode != 0:
+                raise RuntimeError("%s: exit code %d" % (" ".join(command), run.returncode))
+            data = json.loads(stats.read_text())
+            keys.update(data)
+            keys.update(data.get("stages", {}))
+            for counts in data.get("repairs", {}).values():
+                keys.update(counts)
+    return keys
+
+
+def check_sources_and_stats(binary, root, top_commands):
+    problems = []
+    for path in sorted((root / "host").rglob("*")):
+        if path.suffix in (".cpp", ".h"):
+            problems += flag_literals(path.relative_to(root), path.read_text(encoding="utf-8"))
+    cli_md = (root / "docs" / "cli.md").read_text(encoding="utf-8")
+    listed = code_words(cli_md.split("\n\n")[1] if "\n\n" in cli_md else cli_md)
+    for command in top_commands:
+        if command not in listed:
+            problems.append("docs/cli.md: command `%s` is missing from the list of commands" % command)
+    documented = code_words(cli_md)
+    keys = stats_keys(binary, root)
+    for key in sorted(keys - documented):
+        problems.append("docs/cli.md: stats key `%s` (written by synth --stats) is not documented" % key)
+    return problems, len(keys)
+
+
 def binary_help(binary):
     def help_of(path):
         command = [binary] + path + ["--help"]
@@ -212,6 +279,14 @@ meshquilt synth --no-cleanup --write-texture t.mqt
 `--preset`, `--region X0,Y0,X1,Y1`, `--help`.
 """
 
+SAMPLE_SOURCE = """\
+throw InputError("{age}: expected a share");
+throw InputError("--age: expected a share");
+// mentions --age in a comment only
+x = "a -- b";  // a dash pair
+y = f("use --base here");
+"""
+
 
 def self_test():
     failures = []
@@ -256,6 +331,9 @@ def self_test():
     missing = sorted(set(found) - documented)
     expect("missing", missing, ["--no-distortion-min", "--rows"])
 
+    expect("flag literals", [line.split(":")[1] for line in flag_literals("x.cpp", SAMPLE_SOURCE)], ["2", "5"])
+    expect("code words", sorted(code_words("`a_b` and ```\nc {d}\n``` but not e")), ["a_b", "c", "d"])
+
     if failures:
         for failure in failures:
             print("self-test: " + failure)
@@ -270,12 +348,15 @@ def main(argv):
     if len(argv) != 3:
         print("usage: python3 scripts/check_docs.py MESHQUILT_BINARY REPO_ROOT | --self-test", file=sys.stderr)
         return 2
-    problems, options, readme_lines = check(binary_help(argv[1]), Path(argv[2]))
+    help_of = binary_help(argv[1])
+    problems, options, readme_lines = check(help_of, Path(argv[2]))
+    more, keys = check_sources_and_stats(argv[1], Path(argv[2]), parse_help(help_of([]))[1])
+    problems += more
     if problems:
         for problem in problems:
             print(problem)
         return 1
-    print("docs check: %d options documented, README %d lines" % (options, readme_lines))
+    print("docs check: %d options documented, %d stats keys, README %d lines" % (options, keys, readme_lines))
     return 0
 
 

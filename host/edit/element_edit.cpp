@@ -24,18 +24,18 @@ namespace {
 
 void check_request(const ElementView& view, const EditRequest& request) {
   if (!(request.age >= 0.0 && request.age <= 1.0))
-    throw InputError("--age: expected a share in [0, 1], got " + std::to_string(request.age),
+    throw InputError("{age}: expected a share in [0, 1], got " + std::to_string(request.age),
                      ErrorKind::invalid_option);
   for (const EditRegion& region : request.remove_inside) {
     if (view.positions.empty())
-      throw InputError("a box or sphere needs vertex positions: give --base to place a texture file",
+      throw InputError("a box or sphere needs vertex positions: give {base} to place a texture file",
                        ErrorKind::invalid_option);
     if (region.kind == EditRegion::Kind::box &&
         !(region.lo.x <= region.hi.x && region.lo.y <= region.hi.y && region.lo.z <= region.hi.z))
-      throw InputError("--remove-box: each low corner coordinate must not exceed the high one",
+      throw InputError("{remove_box}: each low corner coordinate must not exceed the high one",
                        ErrorKind::invalid_option);
     if (region.kind == EditRegion::Kind::sphere && !(region.radius >= 0.0))
-      throw InputError("--remove-sphere: the radius must not be negative", ErrorKind::invalid_option);
+      throw InputError("{remove_sphere}: the radius must not be negative", ErrorKind::invalid_option);
   }
 }
 
@@ -141,7 +141,7 @@ TriMesh keep_faces(const TriMesh& mesh, const std::vector<uint8_t>& keep) {
 std::vector<std::array<uint8_t, 3>> vertex_colors(const TriMesh& mesh, ColorBy by,
                                                   const std::vector<std::array<uint8_t, 3>>& palette) {
   if (by == ColorBy::source && mesh.sources.size() != mesh.triangles.size())
-    throw InputError("--color-by source: the mesh has no per-face source (write it with synth)",
+    throw InputError("{color_by} source: the mesh has no per-face source (write it with synth)",
                      ErrorKind::invalid_option);
   const std::vector<int32_t> ids = by == ColorBy::source ? mesh.sources : face_element_ids(mesh);
   const auto color_of = [&](int32_t id) -> std::array<uint8_t, 3> {
@@ -174,7 +174,7 @@ std::vector<std::array<uint8_t, 3>> parse_palette(const std::string& text) {
                        return std::isxdigit(static_cast<unsigned char>(c));
                      });
     if (!hex)
-      throw InputError("--palette: expected colours as RRGGBB separated by commas, got '" + text + "'",
+      throw InputError("{palette}: expected colours as RRGGBB separated by commas, got '" + text + "'",
                        ErrorKind::invalid_option);
     const unsigned long value = std::stoul(entry, nullptr, 16);
     palette.push_back(

@@ -55,7 +55,7 @@ bool fit_frame(const std::vector<Vec3>& from, const std::vector<Vec3>& to, glm::
 std::vector<glm::dmat3> vertex_frames(const TriMesh& output, const std::vector<Vec3>& swatch_rest,
                                       int rings) {
   if (output.origins.size() != output.num_vertices())
-    throw InputError("the result names no swatch vertex per vertex (write it with synth --provenance)");
+    throw InputError("the result names no swatch vertex per vertex (write it with synth {provenance})");
   for (int32_t o : output.origins)
     if (o >= static_cast<int32_t>(swatch_rest.size()))
       throw InputError("the result names swatch vertex " + std::to_string(o) + " but the swatch has " +

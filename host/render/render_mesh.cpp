@@ -94,7 +94,7 @@ void validate_render_options(const RenderOptions& options) {
     throw InputError("render samples: expected 1 to 4 per side, got " + std::to_string(options.samples),
                      ErrorKind::invalid_option);
   if (options.up < 0 || options.up > 2)
-    throw InputError("--up: expected x, y or z", ErrorKind::invalid_option);
+    throw InputError("{up}: expected x, y or z", ErrorKind::invalid_option);
   if (!(options.margin >= 0.0 && options.margin <= 0.45))
     throw InputError("render margin: expected 0 to 0.45, got " + std::to_string(options.margin),
                      ErrorKind::invalid_option);
@@ -105,7 +105,7 @@ View parse_view(const std::string& text) {
   if (text == "oblique") return View::oblique;
   if (text == "front") return View::front;
   if (text == "side") return View::side;
-  throw InputError("--view: expected top, oblique, front or side, got '" + text + "'",
+  throw InputError("{view}: expected top, oblique, front or side, got '" + text + "'",
                    ErrorKind::invalid_option);
 }
 
@@ -113,12 +113,12 @@ RenderMode parse_render_mode(const std::string& text) {
   if (text == "shaded") return RenderMode::shaded;
   if (text == "elements") return RenderMode::elements;
   if (text == "colors") return RenderMode::colors;
-  throw InputError("--mode: expected shaded, elements or colors, got '" + text + "'", ErrorKind::invalid_option);
+  throw InputError("{mode}: expected shaded, elements or colors, got '" + text + "'", ErrorKind::invalid_option);
 }
 
 int parse_up_axis(const std::string& text) {
   if (text == "x" || text == "y" || text == "z") return text[0] - 'x';
-  throw InputError("--up: expected x, y or z, got '" + text + "'", ErrorKind::invalid_option);
+  throw InputError("{up}: expected x, y or z, got '" + text + "'", ErrorKind::invalid_option);
 }
 
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
@@ -134,7 +134,7 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
     return render_mesh(turned, upright);
   }
   if (options.mode == RenderMode::colors && mesh.colors.size() != mesh.positions.size())
-    throw InputError("--mode colors: the mesh has no vertex colours (see meshquilt edit --color-by)",
+    throw InputError("{mode} colors: the mesh has no vertex colours (see meshquilt edit {color_by})",
                      ErrorKind::invalid_option);
   Vec3 lo, hi;
   bounding_box(mesh, &lo, &hi);

@@ -11,10 +11,10 @@ namespace meshquilt {
 PlacedTexture place_texture(const QuiltTexture& texture, const TriMesh& base, const std::string& embed,
                             const std::string& texture_name) {
   if (embed != "auto" && embed != "shell" && embed != "normal")
-    throw InputError("--embed: expected auto, shell or normal, got '" + embed + "'",
+    throw InputError("{embed}: expected auto, shell or normal, got '" + embed + "'",
                      ErrorKind::invalid_option);
   if (embed == "shell" && texture.shell.height <= 0.0)
-    throw InputError(texture_name + ": written with --embed normal, so it holds no shell map",
+    throw InputError(texture_name + ": written with {embed} normal, so it holds no shell map",
                      ErrorKind::invalid_option);
   PlacedTexture placed;
   const BaseSurface surface(base);
