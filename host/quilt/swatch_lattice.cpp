@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "mesh/convex_outline.h"
 #include "quilt/swatch_symmetry.h"
 #include "spatial/face_bvh.h"
@@ -14,7 +15,6 @@
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 double cross(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
 

@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 
+#include "core/constants.h"
+
 namespace meshquilt {
 namespace {
 
@@ -70,7 +72,6 @@ bool symmetric_under(const QuiltSwatch& swatch, double angle) {
 }
 
 int rotational_symmetry(const QuiltSwatch& swatch) {
-  constexpr double kPi = 3.14159265358979323846;
   return symmetric_under(swatch, kPi) ? 2 : 1;
 }
 

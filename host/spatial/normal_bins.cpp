@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
+
 namespace meshquilt {
 namespace {
 
@@ -61,7 +63,7 @@ void NormalBins::factor_bounds(const Vec3& n, double* out) const {
   // Members lie within radius of the axis, so their angle to n is at least angle(n, axis) -
   // radius (the triangle inequality on the sphere), and |n - m| = 2 sin(angle / 2) grows with it.
   for (size_t b = 0; b < axis.size(); ++b) {
-    const double gap = std::clamp(angle_between(n, axis[b]) - radius[b], 0.0, M_PI);
+    const double gap = std::clamp(angle_between(n, axis[b]) - radius[b], 0.0, kPi);
     out[b] = (1.0 + 2.0 * std::sin(0.5 * gap)) * (1.0 - 1e-9);
   }
 }

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "core/constants.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "numerics/sparse_solve.h"
@@ -14,7 +15,6 @@
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 double corner_angle(const TriMesh& mesh, const Tri& t, int k) {
   const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];

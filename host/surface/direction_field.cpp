@@ -6,12 +6,12 @@
 #include <Eigen/Sparse>
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "numerics/sparse_solve.h"
 
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // An orthonormal tangent frame of a face: x along its first edge, y = normal x x.
 struct FaceFrame {

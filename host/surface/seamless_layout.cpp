@@ -11,13 +11,14 @@
 #include <Eigen/Sparse>
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
+#include "mesh/disjoint_sets.h"
 #include "numerics/sparse_solve.h"
 #include "quilt/swatch_lattice.h"
 
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // How strongly the layout's scale is held at 1 against being even and aligned.
 constexpr double kUnitWeight = 0.1;
 
@@ -124,25 +125,22 @@ void cut_open(const BaseSurface& base, const std::vector<std::array<uint8_t, 3>>
 // Layout vertices: face corners joined across the edges that are not cut.
 int32_t make_wedges(const BaseSurface& base, SeamlessLayout& layout) {
   const TriMesh& mesh = base.mesh;
-  std::vector<int32_t> parent(3 * mesh.num_faces());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto find = [&](int32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  const size_t corners = 3 * mesh.num_faces();
+  DisjointSets wedges(corners);
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
     const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
       const int32_t g = base.face_across[f][k];
       if (g < 0 || layout.cut[f][k]) continue;
       for (int32_t v : {t[k], t[(k + 1) % 3]})
-        parent[find(static_cast<int32_t>(3 * f) + corner_of(t, v))] = find(3 * g + corner_of(mesh.triangles[g], v));
+        wedges.unite(static_cast<int32_t>(3 * f) + corner_of(t, v), 3 * g + corner_of(mesh.triangles[g], v));
     }
   }
-  layout.corner_wedge.assign(parent.size(), -1);
+  // Numbered in order of their first corner, whichever corner the sets take as root.
+  layout.corner_wedge.assign(corners, -1);
   std::unordered_map<int32_t, int32_t> wedge_of_root;
-  for (size_t c = 0; c < parent.size(); ++c) {
-    const auto [it, fresh] = wedge_of_root.emplace(find(static_cast<int32_t>(c)), static_cast<int32_t>(wedge_of_root.size()));
+  for (size_t c = 0; c < corners; ++c) {
+    const auto [it, fresh] = wedge_of_root.emplace(wedges.find(static_cast<int32_t>(c)), static_cast<int32_t>(wedge_of_root.size()));
     layout.corner_wedge[c] = it->second;
   }
   return static_cast<int32_t>(wedge_of_root.size());

@@ -6,13 +6,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "swatch/tube_mesh.h"
 
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 struct Ring {
   Vec3 centre;

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "swatch/layer_packing.h"
 #include "swatch/swatch_random.h"
@@ -11,7 +12,6 @@
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Messages name the parameters at fault as {name} (OptionError).
 [[noreturn]] void invalid(const std::string& message) { throw OptionError("nuts: " + message); }

@@ -6,13 +6,13 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "swatch/tube_mesh.h"
 
 namespace meshquilt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Messages name the parameters at fault as {name} (OptionError).
 [[noreturn]] void invalid(const std::string& message) { throw OptionError("weave: " + message); }

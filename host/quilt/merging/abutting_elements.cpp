@@ -77,11 +77,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::v
   for (int32_t e = 0; e < element_count; ++e) element_of[e] = e;
   int32_t joined = 0;
   for (const auto& [root, members] : group_pairs) {
-    std::map<int32_t, int32_t> weld;  // vertex -> the vertex it joins (local union-find)
-    const auto find = [&](int32_t v) {
-      for (auto it = weld.find(v); it != weld.end() && it->second != v; it = weld.find(v)) v = it->second;
-      return v;
-    };
+    SparseDisjointSets weld;  // the corners of this group's pairs
     std::vector<int32_t> elements;
     for (size_t p : members) {
       const auto [a, b] = pairs[p];
@@ -91,8 +87,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::v
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
           if (point[layer.triangles[a][i]] == point[layer.triangles[b][j]]) {
-            const int32_t x = find(layer.triangles[a][i]), y = find(layer.triangles[b][j]);
-            if (x != y) weld[std::max(x, y)] = std::min(x, y);
+            weld.unite(layer.triangles[a][i], layer.triangles[b][j]);
           }
     }
     std::sort(elements.begin(), elements.end());
@@ -104,7 +99,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::v
         if (shared[f]) continue;
         Tri t;
         for (int i = 0; i < 3; ++i) {
-          const int32_t v = find(layer.triangles[f][i]);
+          const int32_t v = weld.find(layer.triangles[f][i]);
           const auto [it, fresh] = local.emplace(v, static_cast<int32_t>(candidate.positions.size()));
           if (fresh) candidate.positions.push_back(layer.positions[v]);
           t[i] = it->second;
@@ -113,7 +108,7 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::v
       }
     for (size_t p : members) shared[pairs[p].first] = shared[pairs[p].second] = 0;
     if (!inspect_surface(candidate).closed_manifold()) continue;
-    for (const auto& [v, to] : weld) welded.unite(v, find(to));
+    for (const auto& [v, to] : weld.joined()) welded.unite(v, to);
     for (size_t p : members) removed[pairs[p].first] = removed[pairs[p].second] = 1;
     for (int32_t e : elements) element_of[e] = elements.front();
     joined += static_cast<int32_t>(elements.size()) - 1;
