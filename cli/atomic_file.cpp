@@ -3,7 +3,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 
 namespace meshquilt::cli {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "mesh/memory_budget.h"
+#include "core/memory_budget.h"
 
 namespace meshquilt::cli {
 

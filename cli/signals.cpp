@@ -5,7 +5,7 @@
 
 #include <atomic>
 
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 
 namespace meshquilt::cli {
 namespace {

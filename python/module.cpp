@@ -19,7 +19,7 @@
 #include "edit/element_edit.h"
 #include "edit/swatch_animation.h"
 #include "inspect/inspect_report.h"
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"

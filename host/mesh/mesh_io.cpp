@@ -11,9 +11,9 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 #include "mesh/io/formats.h"
-#include "mesh/memory_budget.h"
+#include "core/memory_budget.h"
 #include "mesh/validation.h"
 
 namespace meshquilt {

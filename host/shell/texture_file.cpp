@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 
 namespace meshquilt {
 namespace {

@@ -13,7 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "mesh/measures.h"
-#include "mesh/populate_pages.h"
+#include "core/populate_pages.h"
 #include "spatial/face_bvh.h"
 
 namespace meshquilt {

@@ -12,8 +12,8 @@
 #include <system_error>
 
 #include "core/error.h"
-#include "mesh/atomic_write.h"
-#include "mesh/populate_pages.h"
+#include "core/atomic_write.h"
+#include "core/populate_pages.h"
 
 namespace meshquilt {
 namespace {

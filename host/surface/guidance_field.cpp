@@ -15,7 +15,7 @@
 #include "core/error.h"
 #include "numerics/sparse_solve.h"
 #include "numerics/symmetric_eigen.h"
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 
 namespace meshquilt {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "core/error.h"
 #include "mesh/base_mesh.h"
-#include "mesh/memory_budget.h"
+#include "core/memory_budget.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 #include "mesh/topology.h"

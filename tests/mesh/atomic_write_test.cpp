@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "mesh/atomic_write.h"
+#include "core/atomic_write.h"
 #include "mesh/mesh_io.h"
 #include "support/run_cli.h"
 

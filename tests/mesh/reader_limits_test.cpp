@@ -12,7 +12,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "mesh/memory_budget.h"
+#include "core/memory_budget.h"
 #include "mesh/mesh_io.h"
 #include "swatch/netpbm.h"
 

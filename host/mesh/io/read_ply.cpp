@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "mesh/memory_budget.h"
+#include "core/memory_budget.h"
 
 #include "mesh/io/io_helpers.h"
 

@@ -1,4 +1,4 @@
-#include "mesh/memory_budget.h"
+#include "core/memory_budget.h"
 
 #include <sys/resource.h>
 #include <unistd.h>
