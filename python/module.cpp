@@ -20,6 +20,7 @@
 #include "edit/swatch_animation.h"
 #include "inspect/inspect_report.h"
 #include "core/atomic_write.h"
+#include "jobs/synth_job.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
@@ -385,44 +386,39 @@ PYBIND11_MODULE(_meshquilt, m) {
          bool per_patch_charts, bool minimize_distortion, bool keep_texture,
          std::optional<py::function> progress, CancelToken* cancel, std::optional<Array3d> field_points,
          std::optional<Array3d> field_directions) {
-        const auto start = std::chrono::steady_clock::now();
-        const bool curved = base_vertices.has_value();
-        if (curved == plane.has_value())
-          throw InputError("synth: give plane=(width, height) or base=(vertices, faces)",
-                           ErrorKind::invalid_option);
-        TriMesh swatch =
-            swatch_vertices ? mesh_from(*swatch_vertices, *swatch_faces, "swatch") : default_swatch();
-        MeshRepairs swatch_repairs, base_repairs;
-        swatch = orient_swatch(swatch, "swatch", &swatch_repairs);
-        if (plane &&
-            !(plane->first > 0.0 && plane->second > 0.0 && plane->first <= 1000.0 && plane->second <= 1000.0))
-          throw InputError("--plane: sizes must lie in (0, 1000]", ErrorKind::invalid_option);
-        if (curved && !(scale > 0.0 && scale <= 10.0))
-          throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale),
-                           ErrorKind::invalid_option);
-        if (cells < 4 || cells > 256)
-          throw InputError("--cells: expected 4..256, got " + std::to_string(cells),
-                           ErrorKind::invalid_option);
-        if (embed != "shell" && embed != "normal")
-          throw InputError("--embed: expected shell or normal, got '" + embed + "'",
-                           ErrorKind::invalid_option);
-        if (!curved && field_points)
+        SynthRequest request;
+        if (swatch_vertices) {
+          request.swatch = mesh_from(*swatch_vertices, *swatch_faces, "swatch");
+          request.swatch_name = "swatch";
+        }
+        if (plane) request.plane = glm::dvec2(plane->first, plane->second);
+        if (base_vertices) request.base = mesh_from(*base_vertices, *base_faces, "base");
+        request.scale = scale;
+        request.seed = seed;
+        request.cells = cells;
+        request.cleanup = cleanup;
+        request.symmetry = symmetry;
+        request.shell_height = shell_height;
+        request.embed = embed;
+        request.shared_layout = !per_patch_charts;
+        request.distortion_min = minimize_distortion;
+        request.keep_texture = keep_texture;
+        check_synth_request(request);
+        if (field_points && !base_vertices)
           throw InputError("synth: a field needs base=(vertices, faces)", ErrorKind::invalid_option);
-        TriMesh base;
-        if (curved) base = prepare_base(mesh_from(*base_vertices, *base_faces, "base"), "base", &base_repairs);
-        const std::vector<FieldConstraint> constraints =
-            field_points ? field_constraints(*field_points, *field_directions, base) : std::vector<FieldConstraint>{};
+        const SynthInputs inputs = prepare_synth_inputs(request);
+        if (field_points) {
+          request.field = field_constraints(*field_points, *field_directions, inputs.base);
+          request.field_name = "drawn";
+        }
         Job job;
         if (cancel) job.token = cancel;
-        QuiltOptions common;
-        common.seed = seed;
-        common.cells_across_swatch = cells;
-        common.cleanup = cleanup;
-        common.cancel = job.token;
+        SynthHooks hooks;
+        hooks.cancel = job.token;
         const auto begun = std::chrono::steady_clock::now();
         if (progress) {
           py::function callback = *progress;
-          common.progress = [&job, callback, begun](const QuiltProgress& p) {
+          hooks.progress = [&job, callback, begun](const QuiltProgress& p) {
             const double share = p.total_area > 0.0 ? std::min(1.0, p.covered_area / p.total_area) : 0.0;
             const double spent =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
@@ -436,67 +432,23 @@ PYBIND11_MODULE(_meshquilt, m) {
             }
           };
         }
-        TriMesh result;
-        nlohmann::json stats;
-        std::string texture;
+        SynthOutcome outcome;
         {
           py::gil_scoped_release release;
           try {
-            std::unique_ptr<engine::Device> device =
-                engine::open_device(engine::parse_backend_choice(backend));
-            if (curved) {
-              SurfaceQuiltOptions options;
-              static_cast<QuiltOptions&>(options) = common;
-              options.scale = scale;
-              options.shell_height = shell_height;
-              options.shared_layout = !per_patch_charts;
-              options.symmetry = symmetry;
-              const BaseSurface surface(base);
-              const GuidanceField field = interpolate_field(surface, constraints);
-              ShellEmbeddingOptions shell_options;
-              ShellTexture shell_texture;
-              shell_options.stretch.seed = seed;
-              shell_options.minimize_stretch = minimize_distortion;
-              if (embed == "shell")
-                options.embedding = [&](const BaseSurface& b, double height) {
-                  auto embedding = build_shell_embedding(*device, b, height, shell_options);
-                  if (keep_texture) shell_texture = embedding->texture();
-                  return std::unique_ptr<SurfaceEmbedding>(std::move(embedding));
-                };
-              SurfaceQuiltStats s;
-              SurfaceQuilt quilt = quilt_surface(swatch, base, field, *device, options, &s);
-              result = std::move(quilt.mesh);
-              if (keep_texture)
-                texture = format_texture(make_quilt_texture(base, result, quilt.local, shell_texture));
-              stats = {{"patches", s.patches},
-                       {"holes", s.holes},
-                       {"dropped_elements", s.dropped_elements},
-                       {"dropped_folded", s.dropped_folded},
-                       {"cones", s.cones},
-                       {"shell_height", s.shell_height}};
-            } else {
-              PlanarQuiltOptions options;
-              static_cast<QuiltOptions&>(options) = common;
-              options.width = plane->first;
-              options.height = plane->second;
-              QuiltStats s;
-              result = quilt_plane(swatch, *device, options, &s);
-              stats = {{"patches", s.patches},
-                       {"holes", s.holes},
-                       {"dropped_elements", s.dropped_elements},
-                       {"dropped_folded", s.dropped_folded}};
-            }
+            std::unique_ptr<engine::Device> device = engine::open_device(engine::parse_backend_choice(backend));
+            outcome = run_synth(request, inputs, *device, hooks);
           } catch (const Cancelled&) {
             if (!job.callback_error) throw;
           }
         }
         if (job.callback_error) std::rethrow_exception(job.callback_error);
-        stats["faces"] = result.num_faces();
-        stats["vertices"] = result.num_vertices();
-        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        for (const auto& [name, count] : swatch_repairs.counts()) stats["repairs"]["swatch"][name] = count;
-        if (curved)
-          for (const auto& [name, count] : base_repairs.counts()) stats["repairs"]["base"][name] = count;
+        const TriMesh& result = outcome.mesh;
+        nlohmann::json& stats = outcome.stats;
+        stats["output"] = nullptr;  // the mesh comes back as arrays, not a file
+        std::string texture;
+        if (keep_texture && request.base)
+          texture = format_texture(make_quilt_texture(inputs.base, result, outcome.local, outcome.shell_texture));
         py::dict out = dict_of(result);
         out["stats"] = json_to_python(stats);
         if (!texture.empty()) out["texture"] = py::bytes(texture);

@@ -105,6 +105,37 @@ def test_a_base_and_a_swatch_equal_the_command_line():
     assert np.array_equal(result.element, element)
 
 
+def cli_stats(*args):
+    with tempfile.TemporaryDirectory() as folder:
+        stats = os.path.join(folder, "stats.json")
+        done = subprocess.run([CLI, "synth", "--progress", "none", "--backend", "cpu", *args, "--stats", stats, "-o",
+                               os.path.join(folder, "out.ply")], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        return json.load(open(stats))
+
+
+def key_paths(tree, prefix=""):
+    paths = set()
+    for key, value in tree.items():
+        paths.add(prefix + key)
+        if isinstance(value, dict):
+            paths |= key_paths(value, prefix + key + ".")
+    return paths
+
+
+def test_synth_stats_have_the_command_lines_keys_and_values():
+    plane = meshquilt.synth(plane=(2, 2), seed=1, backend="cpu").stats
+    cli_plane = cli_stats("--plane", "2x2", "--seed", "1")
+    assert key_paths(plane) == key_paths(cli_plane) - {"stages.write"}
+    base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
+    curved = meshquilt.synth(base=base, scale=0.5, seed=2, backend="cpu").stats
+    cli_curved = cli_stats("--base", os.path.join(SOURCE, "data", "sphere.off"), "--scale", "0.5", "--seed", "2")
+    assert key_paths(curved) == key_paths(cli_curved) - {"stages.write"}
+    for stats, cli in ((plane, cli_plane), (curved, cli_curved)):
+        for key in ("faces", "vertices", "elements", "patches", "stitched_pairs", "lattice_copies", "holes"):
+            assert stats[key] == cli[key], key
+
+
 def test_a_swatch_and_base_wound_inward_are_repaired_as_the_command_line_repairs_them():
     base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
     mail = meshquilt.swatch("chainmail", preset="small")
