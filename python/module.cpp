@@ -38,13 +38,8 @@
 #include "shell/texture_placement.h"
 #include "surface/guidance_field.h"
 #include "surface/surface_quilting.h"
-#include "swatch/chainmail.h"
 #include "swatch/default_swatch.h"
-#include "swatch/fruit.h"
-#include "swatch/nuts.h"
-#include "swatch/vine.h"
-#include "swatch/weave.h"
-#include "swatch/weave_pattern.h"
+#include "swatch/swatch_kinds.h"
 
 namespace py = pybind11;
 using namespace meshquilt;
@@ -147,56 +142,30 @@ py::object json_to_python(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }
 
-// Reads kwargs into an options struct: set(name, &Options::field) for each accepted name; any
-// name left over is refused with the list of accepted ones.
-template <class Options>
-class Kwargs {
- public:
-  Kwargs(const py::kwargs& given, Options& options, std::string kind)
-      : given_(given), options_(options), kind_(std::move(kind)) {}
-  template <class T>
-  Kwargs& set(const char* name, T Options::*field) {
-    accepted_ += std::string(accepted_.empty() ? "" : ", ") + name;
-    if (given_.contains(name)) {
-      options_.*field = given_[name].template cast<T>();
-      used_.push_back(name);
-    }
-    return *this;
-  }
-  void done(std::initializer_list<const char*> also = {}) const {
-    for (const auto& item : given_) {
-      const std::string name = py::str(item.first);
-      if (std::find(used_.begin(), used_.end(), name) == used_.end() &&
-          std::find_if(also.begin(), also.end(), [&](const char* a) { return name == a; }) == also.end())
-        throw InputError("swatch " + kind_ + ": unknown option '" + name + "' (accepted: " + accepted_ + ")",
-                         ErrorKind::invalid_option);
+// Python's keyword arguments as a registered kind's settings (swatch/swatch_kinds.h); a name the
+// kind does not take is passed on, to be refused with the list of those it does.
+SwatchSettings swatch_settings(const std::string& kind, const std::string& preset, uint64_t seed,
+                               const py::kwargs& kwargs) {
+  SwatchSettings settings;
+  settings.preset = preset;
+  settings.seed = seed;
+  const SwatchKind& registered = swatch_kind(kind);
+  for (const auto& item : kwargs) {
+    const std::string name = py::str(item.first);
+    const auto option = std::find_if(registered.options.begin(), registered.options.end(),
+                                     [&](const SwatchOption& o) { return o.name == name; });
+    if (option == registered.options.end() || option->type == SwatchOption::Type::integer ||
+        option->type == SwatchOption::Type::real) {
+      settings.numbers[name] = option == registered.options.end() ? 0.0 : item.second.cast<double>();
+    } else if (option->type == SwatchOption::Type::text) {
+      settings.texts[name] = item.second.cast<std::string>();
+    } else if (item.second.cast<bool>()) {
+      settings.flags.insert(name);
     }
   }
-
- private:
-  const py::kwargs& given_;
-  Options& options_;
-  std::string kind_, accepted_;
-  std::vector<std::string> used_;
-};
-
-VineOptions vine_options(bool small, uint64_t seed, const py::kwargs& kwargs) {
-  VineOptions o = small ? VineOptions::small() : VineOptions{};
-  o.seed = seed;
-  Kwargs<VineOptions>(kwargs, o, "vine")
-      .set("columns", &VineOptions::columns)
-      .set("rows", &VineOptions::rows)
-      .set("spacing", &VineOptions::spacing)
-      .set("height", &VineOptions::height)
-      .set("radius", &VineOptions::radius)
-      .set("curl", &VineOptions::curl)
-      .set("sway", &VineOptions::sway)
-      .set("segments", &VineOptions::segments)
-      .set("sides", &VineOptions::sides)
-      .done();
-  return o;
+  check_swatch_settings(kind, settings);
+  return settings;
 }
-
 
 std::vector<Vec3> positions_of(const Array3d& a, const char* what) {
   if (a.ndim() != 2 || a.shape(1) != 3)
@@ -207,71 +176,6 @@ std::vector<Vec3> positions_of(const Array3d& a, const char* what) {
   return out;
 }
 
-TriMesh make_swatch(const std::string& kind, const std::string& preset, uint64_t seed,
-                    const py::kwargs& kwargs) {
-  const bool small = preset == "small";
-  if (preset != "small" && preset != "default")
-    throw InputError("--preset: expected default or small, got '" + preset + "'", ErrorKind::invalid_option);
-  if (kind == "chainmail") {
-    ChainmailOptions o = small ? ChainmailOptions::small() : ChainmailOptions{};
-    Kwargs<ChainmailOptions>(kwargs, o, kind)
-        .set("rows", &ChainmailOptions::rows)
-        .set("columns", &ChainmailOptions::columns)
-        .set("ring_radius", &ChainmailOptions::ring_radius)
-        .set("wire_radius", &ChainmailOptions::wire_radius)
-        .set("pitch_x", &ChainmailOptions::pitch_x)
-        .set("pitch_y", &ChainmailOptions::pitch_y)
-        .set("tilt_degrees", &ChainmailOptions::tilt_degrees)
-        .set("ring_segments", &ChainmailOptions::ring_segments)
-        .set("wire_segments", &ChainmailOptions::wire_segments)
-        .done();
-    return make_chainmail(o);
-  }
-  if (kind == "weave" || kind == "wire") {
-    WeaveOptions o = kind == "wire" ? (small ? WeaveOptions::small_wire() : WeaveOptions::wire())
-                                    : (small ? WeaveOptions::small() : WeaveOptions{});
-    if (kwargs.contains("pattern")) o.pattern = parse_weave_pattern(kwargs["pattern"].cast<std::string>());
-    Kwargs<WeaveOptions>(kwargs, o, kind)
-        .set("warps", &WeaveOptions::warps)
-        .set("wefts", &WeaveOptions::wefts)
-        .set("pitch", &WeaveOptions::pitch)
-        .set("yarn_radius", &WeaveOptions::yarn_radius)
-        .set("amplitude", &WeaveOptions::amplitude)
-        .set("segments_per_pitch", &WeaveOptions::segments_per_pitch)
-        .set("sides", &WeaveOptions::sides)
-        .done({"pattern"});
-    return make_weave(o);
-  }
-  if (kind == "fruit") {
-    FruitOptions o = small ? FruitOptions::small() : FruitOptions{};
-    o.seed = seed;
-    Kwargs<FruitOptions>(kwargs, o, kind)
-        .set("columns", &FruitOptions::columns)
-        .set("rows", &FruitOptions::rows)
-        .set("radius", &FruitOptions::radius)
-        .set("size_variation", &FruitOptions::size_variation)
-        .set("gap", &FruitOptions::gap)
-        .set("subdivisions", &FruitOptions::subdivisions)
-        .done();
-    return make_fruit(o);
-  }
-  if (kind == "vine") return make_vine(vine_options(small, seed, kwargs));
-  if (kind == "nuts") {
-    NutOptions o = small ? NutOptions::small() : NutOptions{};
-    o.seed = seed;
-    Kwargs<NutOptions>(kwargs, o, kind)
-        .set("columns", &NutOptions::columns)
-        .set("rows", &NutOptions::rows)
-        .set("across_flats", &NutOptions::across_flats)
-        .set("hole_radius", &NutOptions::hole_radius)
-        .set("thickness", &NutOptions::thickness)
-        .set("gap", &NutOptions::gap)
-        .done();
-    return make_nuts(o);
-  }
-  throw InputError("swatch: unknown kind '" + kind + "' (chainmail, weave, wire, fruit, vine, nuts)",
-                   ErrorKind::invalid_option);
-}
 
 // Runs `work` without the GIL; a progress callback that raises cancels the job and its error is
 // raised here.
@@ -371,7 +275,7 @@ PYBIND11_MODULE(_meshquilt, m) {
   m.def(
       "swatch",
       [](const std::string& kind, const std::string& preset, uint64_t seed, const py::kwargs& kwargs) {
-        return dict_of(make_swatch(kind, preset, seed, kwargs));
+        return dict_of(make_builtin_swatch(kind, swatch_settings(kind, preset, seed, kwargs)));
       },
       py::arg("kind"), py::arg("preset") = "default", py::arg("seed") = 1);
 
@@ -722,15 +626,31 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("remove_elements") = std::vector<int32_t>{}, py::arg("remove_sources") = std::vector<int32_t>{},
       py::arg("keep_sources") = std::vector<int32_t>{}, py::arg("age") = 0.0, py::arg("seed") = 1);
 
+  m.def("swatch_kinds", [] {
+    py::list kinds;
+    for (const SwatchKind& kind : swatch_kinds()) {
+      py::list options;
+      for (const SwatchOption& o : kind.options) {
+        static const char* types[] = {"integer", "real", "text", "flag"};
+        options.append(py::dict(py::arg("name") = o.name, py::arg("type") = types[static_cast<int>(o.type)],
+                                py::arg("help") = Error::render(o.help, [](const std::string& n) { return n; }), py::arg("choices") = o.choices));
+      }
+      kinds.append(py::dict(py::arg("name") = kind.name, py::arg("help") = Error::render(kind.help, [](const std::string& n) { return n; }),
+                            py::arg("random") = kind.random, py::arg("options") = options,
+                            py::arg("defaults") = kind.defaults("default"),
+                            py::arg("small_defaults") = kind.defaults("small")));
+    }
+    return kinds;
+  });
+
   m.def(
       "vine_frames",
       [](int count, const std::string& preset, uint64_t seed, const py::kwargs& kwargs) {
-        if (preset != "small" && preset != "default")
-          throw InputError("--preset: expected default or small, got '" + preset + "'", ErrorKind::invalid_option);
+        const SwatchSettings settings = swatch_settings("vine", preset, seed, kwargs);
         if (count < 1 || count > 10000)
-          throw InputError("--frames: expected 1..10000, got " + std::to_string(count), ErrorKind::invalid_option);
+          throw InputError("{frames}: expected 1..10000, got " + std::to_string(count), ErrorKind::invalid_option);
         py::list frames;
-        for (const TriMesh& frame : make_vine_frames(vine_options(preset == "small", seed, kwargs), count))
+        for (const TriMesh& frame : swatch_kind("vine").frames(settings, count))
           frames.append(positions_array(frame.positions));
         return frames;
       },

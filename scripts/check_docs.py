@@ -8,7 +8,8 @@ Usage:
 Fails (exit 1, one line per problem) when README.md has more than 200 lines; when a long
 option printed by `MESHQUILT --help` or by `MESHQUILT <sub> [<sub> ...] --help` for any
 subcommand (found in the "Subcommands:" section of CLI11's help) is missing from docs/cli.md;
-when a command is missing from docs/cli.md's list of commands (its first paragraph); when a key
+when a command is missing from docs/cli.md's list of commands (its first paragraph) or a swatch
+kind its section; when a key
 of the stats JSON that `synth --stats` writes over a plane and over data/sphere.off (top-level
 keys, stage names, repair counts) is missing from docs/cli.md; or when a string literal in
 host/ names a command-line flag (library messages say {name}; the front ends spell it).
@@ -171,7 +172,7 @@ def stats_keys(binary, root):
     return keys
 
 
-def check_sources_and_stats(binary, root, top_commands):
+def check_sources_and_stats(binary, root, top_commands, swatch_kinds=()):
     problems = []
     for path in sorted((root / "host").rglob("*")):
         if path.suffix in (".cpp", ".h"):
@@ -181,6 +182,9 @@ def check_sources_and_stats(binary, root, top_commands):
     for command in top_commands:
         if command not in listed:
             problems.append("docs/cli.md: command `%s` is missing from the list of commands" % command)
+    for kind in swatch_kinds:
+        if kind != "check" and "### `swatch %s`" % kind not in cli_md:
+            problems.append("docs/cli.md: swatch kind `%s` has no section (### `swatch %s`)" % (kind, kind))
     documented = code_words(cli_md)
     keys = stats_keys(binary, root)
     for key in sorted(keys - documented):
@@ -350,7 +354,8 @@ def main(argv):
         return 2
     help_of = binary_help(argv[1])
     problems, options, readme_lines = check(help_of, Path(argv[2]))
-    more, keys = check_sources_and_stats(argv[1], Path(argv[2]), parse_help(help_of([]))[1])
+    more, keys = check_sources_and_stats(argv[1], Path(argv[2]), parse_help(help_of([]))[1],
+                                         parse_help(help_of(["swatch"]))[1])
     problems += more
     if problems:
         for problem in problems:

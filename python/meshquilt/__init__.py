@@ -19,7 +19,7 @@ import numpy as np
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "synth", "guidance", "paint", "relief",
+__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "swatch_kinds", "synth", "guidance", "paint", "relief",
            "vine_frames",
            "animate",
            "inspect", "render", "edit", "read", "write", "embed"]
@@ -85,9 +85,16 @@ def _mesh(d: dict, cls=Mesh, **extra) -> Mesh:
 
 def swatch(kind: str, preset: str = "default", seed: int = 1, **options: Any) -> Mesh:
     """A built-in swatch: "chainmail", "weave" (pattern="plain" | "twill:M/N" | "satin:M/N"), "wire",
-    "fruit", "vine" or "nuts", with the options of `meshquilt swatch KIND` (underscores for dashes).
-    preset="small" gives test-sized swatches."""
+    "fruit", "vine", "nuts" or "heightfield", with the options of `meshquilt swatch KIND`
+    (underscores for dashes; see swatch_kinds()). preset="small" gives test-sized swatches."""
     return _mesh(_meshquilt.swatch(kind, preset, seed, **options))
+
+
+def swatch_kinds() -> list:
+    """The built-in swatch kinds, as `swatch` and `meshquilt swatch KIND` take them: per kind its
+    name, help, whether the seed changes it, its options (name, type, help, choices) and their
+    values under the default and the small preset."""
+    return _meshquilt.swatch_kinds()
 
 
 def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, float]] = None,

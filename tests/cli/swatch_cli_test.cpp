@@ -106,7 +106,7 @@ TEST(SwatchCli, InvalidOptionsFailWithoutWriting) {
       {"weave --only diagonal", code(cli::ExitCode::usage)},
       {"wire --radius 0.6", code(cli::ExitCode::invalid_option)},
       {"wire --crimp 0.05", code(cli::ExitCode::invalid_option)},
-      {"wire --wires 0", code(cli::ExitCode::usage)},
+      {"wire --wires 0", code(cli::ExitCode::invalid_option)},
       {"weave --pattern '" + (dir / "missing.pbm").string() + "'", code(cli::ExitCode::file_unreadable)},
       {"chainmail --wire-radius 0.4", code(cli::ExitCode::invalid_option)},
       {"chainmail --rows 5", code(cli::ExitCode::invalid_option)},

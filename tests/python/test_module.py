@@ -405,6 +405,37 @@ def test_the_engine_runs_without_the_gil():
     assert len(ticks) > 10
 
 
+def read_mesh_ply(path):
+    ply = read_ply(path)
+    v = np.array([row[:3] for row in ply["vertex"][1]], dtype=np.float64)
+    f = np.array([row[0] for row in ply["face"][1]], dtype=np.int32)
+    return v, f
+
+
+@pytest.mark.parametrize("kind", [k["name"] for k in meshquilt.swatch_kinds()])
+def test_every_registered_swatch_kind_equals_the_command_line(kind, tmp_path):
+    info = next(k for k in meshquilt.swatch_kinds() if k["name"] == kind)
+    assert info["options"] and set(info["defaults"]) <= {o["name"] for o in info["options"]}
+    # The small preset with one integer option moved off its default, as both fronts take it.
+    integer = next(o["name"] for o in info["options"] if o["type"] == "integer")
+    value = int(info["small_defaults"][integer]) + (1 if integer != "rows" else 2)
+    path = str(tmp_path / "s.ply")
+    done = subprocess.run([CLI, "swatch", kind, "--preset", "small", "--seed", "3",
+                           "--" + integer.replace("_", "-"), str(value), "-o", path], capture_output=True, text=True)
+    made = None
+    try:
+        made = meshquilt.swatch(kind, preset="small", seed=3, **{integer: value})
+    except meshquilt.Error as error:
+        assert done.returncode == 6 and str(error).split(":")[-1] in done.stderr, (error, done.stderr)
+        return
+    assert done.returncode == 0, done.stderr
+    v, f = read_mesh_ply(path)
+    assert np.array_equal(made.faces, f)
+    assert np.allclose(made.vertices, v, atol=1e-6)
+    with pytest.raises(meshquilt.Error, match="whole number"):
+        meshquilt.swatch(kind, preset="small", **{integer: value + 0.5})
+
+
 def test_errors_carry_the_command_lines_message():
     with pytest.raises(meshquilt.Error, match="--plane"):
         meshquilt.synth(plane=(0, 2))
