@@ -12,7 +12,8 @@ bl_info = {
     "category": "Mesh",
 }
 
-import base64
+import os
+import tempfile
 
 import bmesh
 import bpy
@@ -145,6 +146,121 @@ def guide_field(guide, base, depsgraph=None):
     return np.array(points, dtype=np.float64), np.array(directions, dtype=np.float64)
 
 
+def swatch_look(obj):
+    """How a swatch object looks, per triangle of mesh_arrays(obj): its vertices, UVs of the active
+    UV map (None without one), material slot and smooth flag; with its materials and UV map name."""
+    mesh = obj.data
+    mesh.calc_loop_triangles()
+    count = len(mesh.loop_triangles)
+    vertices = np.empty(3 * count, dtype=np.int32)
+    mesh.loop_triangles.foreach_get("vertices", vertices)
+    materials = np.empty(count, dtype=np.int32)
+    mesh.loop_triangles.foreach_get("material_index", materials)
+    smooth = np.empty(count, dtype=bool)
+    mesh.loop_triangles.foreach_get("use_smooth", smooth)
+    uvs, uv_name = None, None
+    if mesh.uv_layers.active is not None:
+        loops = np.empty(3 * count, dtype=np.int32)
+        mesh.loop_triangles.foreach_get("loops", loops)
+        per_loop = np.empty(2 * len(mesh.loops))
+        mesh.uv_layers.active.data.foreach_get("uv", per_loop)
+        uvs = per_loop.reshape(-1, 2)[loops].reshape(count, 3, 2)
+        uv_name = mesh.uv_layers.active.name
+    return {"vertices": vertices.reshape(count, 3), "uvs": uvs, "uv_name": uv_name, "material": materials,
+            "smooth": smooth, "materials": [slot.material for slot in obj.material_slots]}
+
+
+# Materials of the built-in kinds: base colour, metallic, roughness.
+BUILT_IN_LOOKS = {"chainmail": ((0.62, 0.62, 0.64), 1.0, 0.3), "wire": ((0.7, 0.7, 0.72), 1.0, 0.35),
+                  "nuts": ((0.55, 0.55, 0.57), 1.0, 0.4), "weave": ((0.55, 0.33, 0.2), 0.0, 0.8),
+                  "fruit": ((0.6, 0.08, 0.05), 0.0, 0.35), "vine": ((0.18, 0.42, 0.12), 0.0, 0.6),
+                  "heightfield": ((0.7, 0.66, 0.6), 0.0, 0.7)}
+
+
+def built_in_material(kind):
+    """One shared material a built-in kind wears (made once per file)."""
+    name = "meshquilt " + kind
+    material = bpy.data.materials.get(name)
+    if material is None:
+        colour, metallic, roughness = BUILT_IN_LOOKS.get(kind, BUILT_IN_LOOKS["heightfield"])
+        material = bpy.data.materials.new(name)
+        material.diffuse_color = colour + (1.0,)
+        material.metallic, material.roughness = metallic, roughness
+        material.use_nodes = True
+        principled = material.node_tree.nodes["Principled BSDF"]
+        principled.inputs["Base Color"].default_value = colour + (1.0,)
+        principled.inputs["Metallic"].default_value = metallic
+        principled.inputs["Roughness"].default_value = roughness
+    return material
+
+
+def dress(mesh, faces, origins, look):
+    """The swatch's look on a result: each face whose corners came from one swatch triangle takes
+    that triangle's UVs, material and smooth flag; any other (a seam where pieces were stitched)
+    takes, per corner, a UV of the swatch vertex it came from, and the material and smooth flag of
+    a triangle at its first corner's swatch vertex."""
+    tri = look["vertices"]
+    count = int(tri.max()) + 1 if len(tri) else 0
+    corner = np.asarray(origins)[faces]  # (F, 3) swatch vertices
+    def key(t):
+        t = np.sort(t, axis=1).astype(np.int64)
+        return (t[:, 0] * count + t[:, 1]) * count + t[:, 2]
+    swatch_keys = key(tri)
+    order = np.argsort(swatch_keys)
+    at = np.searchsorted(swatch_keys[order], key(corner))
+    at = np.minimum(at, len(order) - 1)
+    match = swatch_keys[order][at] == key(corner)
+    source_tri = np.where(match, order[at], -1)
+    # Per swatch vertex, one triangle and corner that holds it (the fallback).
+    vertex_tri = np.zeros(count, dtype=np.int64)
+    vertex_corner = np.zeros(count, dtype=np.int64)
+    for k in range(3):
+        vertex_tri[tri[:, k]] = np.arange(len(tri))
+        vertex_corner[tri[:, k]] = k
+    fallback = vertex_tri[corner[:, 0]]
+    face_tri = np.where(match, source_tri, fallback)
+    if look["materials"]:
+        for material in look["materials"]:
+            mesh.materials.append(material)
+        mesh.polygons.foreach_set("material_index", look["material"][face_tri].astype(np.int32))
+    mesh.polygons.foreach_set("use_smooth", look["smooth"][face_tri])
+    if look["uvs"] is not None:
+        uvs = np.empty((len(faces), 3, 2))
+        for k in range(3):
+            # The matching corner of the swatch triangle; else the swatch vertex's own UV.
+            same = tri[source_tri] == corner[:, k:k + 1]
+            which = np.argmax(same, axis=1)
+            exact = look["uvs"][source_tri, which]
+            loose = look["uvs"][vertex_tri[corner[:, k]], vertex_corner[corner[:, k]]]
+            uvs[:, k] = np.where((match & same.any(axis=1))[:, None], exact, loose)
+        layer = mesh.uv_layers.new(name=look["uv_name"] or "UVMap")
+        layer.data.foreach_set("uv", uvs.ravel())
+
+
+def texture_folder():
+    """Where texture files go: beside the saved .blend (`//meshquilt/`), else Blender's temporary
+    folder (kept while Blender runs)."""
+    if bpy.data.filepath:
+        return "//meshquilt"
+    return os.path.join(bpy.app.tempdir or tempfile.gettempdir(), "meshquilt")
+
+
+def store_texture(obj, data):
+    """Writes the layer in texture space to a file and remembers its path on `obj` (never the bytes:
+    they would make the .blend several times larger)."""
+    folder = texture_folder()
+    os.makedirs(bpy.path.abspath(folder), exist_ok=True)
+    path = folder + "/" + bpy.path.clean_name(obj.name) + ".mqt"
+    with open(bpy.path.abspath(path), "wb") as out:
+        out.write(data)
+    obj["meshquilt_texture_file"] = path
+
+
+def load_texture(obj):
+    with open(bpy.path.abspath(obj["meshquilt_texture_file"]), "rb") as file:
+        return file.read()
+
+
 def make_job(context, base):
     s, prefs = settings_of(context), preferences(context)
     swatch = mesh_arrays(s.swatch_object) if s.swatch_object else None
@@ -156,9 +272,10 @@ def make_job(context, base):
                               executable=prefs.executable if prefs else "meshquilt", field=field)
 
 
-def add_result_object(context, base, result, suffix="quilt"):
-    """The result as a new object beside the base, with face attributes `element` and `source`
-    and one material per source."""
+def add_result_object(context, base, result, suffix="quilt", look=None, kind=None):
+    """The result as a new object beside the base, selected and active, with face attributes
+    `element` and `source`: dressed in the swatch object's UVs, materials and shading (`look`), or
+    in the built-in `kind`'s material and smooth, or else one material per source."""
     vertices, faces = result["vertices"], result["faces"]
     mesh = bpy.data.meshes.new(base.name + "_" + suffix)
     mesh.vertices.add(len(vertices))
@@ -176,7 +293,12 @@ def add_result_object(context, base, result, suffix="quilt"):
         # The swatch vertex each vertex came from, for playing a swatch animation on it.
         attribute = mesh.attributes.new("origin", "INT", "POINT")
         attribute.data.foreach_set("value", np.asarray(result["origin"], dtype=np.int32))
-    if result.get("source") is not None:
+    if look is not None and result.get("origin") is not None:
+        dress(mesh, np.asarray(faces), result["origin"], look)
+    elif kind is not None:
+        mesh.materials.append(built_in_material(kind))
+        mesh.polygons.foreach_set("use_smooth", np.ones(len(faces), dtype=bool))
+    elif result.get("source") is not None:
         sources = np.unique(result["source"])
         for k, s in enumerate(sources):
             material = bpy.data.materials.new("%s_source_%d" % (mesh.name, s))
@@ -189,11 +311,15 @@ def add_result_object(context, base, result, suffix="quilt"):
     mesh.update()
     mesh.validate()
     obj = bpy.data.objects.new(mesh.name, mesh)
+    context.collection.objects.link(obj)
     if result.get("texture"):
         # The layer in texture space, so that it can follow the base after a pose or a sculpt.
-        obj["meshquilt_texture"] = base64.b64encode(result["texture"]).decode("ascii")
+        store_texture(obj, result["texture"])
         obj["meshquilt_base"] = base.name
-    context.collection.objects.link(obj)
+    for other in context.selected_objects:
+        other.select_set(False)
+    obj.select_set(True)
+    context.view_layer.objects.active = obj
     return obj
 
 
@@ -252,12 +378,23 @@ class JobOperator:
         return self._apply(context, self._job.result)
 
 
+def still_there(obj):
+    """Whether a Blender object captured earlier still exists (it may be deleted while a job runs)."""
+    try:
+        return obj is not None and obj.name in bpy.data.objects
+    except ReferenceError:
+        return False
+
+
 class MESHQUILT_OT_create(JobOperator, bpy.types.Operator):
     """Quilt the active mesh with the swatch; Esc cancels and leaves the scene as it was"""
     bl_idname = "meshquilt.create"
     bl_label = "Create"
+    bl_options = {"REGISTER", "UNDO"}
 
     _base = None
+    _look = None
+    _kind = None
 
     @classmethod
     def poll(cls, context):
@@ -265,10 +402,16 @@ class MESHQUILT_OT_create(JobOperator, bpy.types.Operator):
 
     def _start(self, context):
         self._base = context.active_object
+        s = settings_of(context)
+        self._look = swatch_look(s.swatch_object) if s.swatch_object else None
+        self._kind = None if s.swatch_object else s.swatch_kind
         return make_job(context, self._base).start()
 
     def _apply(self, context, result):
-        obj = add_result_object(context, self._base, result)
+        if not still_there(self._base):
+            self.report({"WARNING"}, "meshquilt: the base was deleted while quilting; nothing added")
+            return {"CANCELLED"}
+        obj = add_result_object(context, self._base, result, look=self._look, kind=self._kind)
         self.report({"INFO"}, "meshquilt: %d faces in %s" % (len(result["faces"]), obj.name))
         return {"FINISHED"}
 
@@ -391,7 +534,7 @@ class MESHQUILT_OT_follow_base(bpy.types.Operator):
     @classmethod
     def poll(cls, context):
         obj = context.active_object
-        return obj is not None and "meshquilt_texture" in obj and obj.get("meshquilt_base") in bpy.data.objects
+        return obj is not None and "meshquilt_texture_file" in obj and obj.get("meshquilt_base") in bpy.data.objects
 
     def execute(self, context):
         obj = context.active_object
@@ -400,7 +543,7 @@ class MESHQUILT_OT_follow_base(bpy.types.Operator):
             return {"CANCELLED"}
         base = bpy.data.objects[obj["meshquilt_base"]]
         try:
-            placed = module.embed(base64.b64decode(obj["meshquilt_texture"]),
+            placed = module.embed(load_texture(obj),
                                   mesh_arrays(base, context.evaluated_depsgraph_get()))
         except module.Error as error:
             self.report({"ERROR"}, str(error))
@@ -602,7 +745,7 @@ class MESHQUILT_OT_follow_frames(bpy.types.Operator):
         if module is None:
             return {"CANCELLED"}
         base = bpy.data.objects[obj["meshquilt_base"]]
-        texture = base64.b64decode(obj["meshquilt_texture"])
+        texture = load_texture(obj)
         scene = context.scene
         current = scene.frame_current
         world_to_local = np.array(obj.matrix_world.inverted())

@@ -24,7 +24,8 @@ def import_module(path=""):
 
 
 def read_binary_ply(path):
-    """Vertices, faces and the per-face `element` and `source` of a PLY that meshquilt wrote."""
+    """Vertices, faces, the per-face `element` and `source` and the per-vertex `origin` of a PLY
+    that meshquilt wrote."""
     data = open(path, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
     header = data[:end].decode().split("\n")
@@ -49,6 +50,8 @@ def read_binary_ply(path):
     for name in ("element", "source"):
         if name in faces.dtype.names:
             out[name] = np.ascontiguousarray(faces[name], dtype=np.int32)
+    if "origin" in vertices.dtype.names:
+        out["origin"] = np.ascontiguousarray(vertices["origin"], dtype=np.int32)
     return out
 
 
@@ -144,7 +147,8 @@ class QuiltJob(BackgroundJob):
             out = os.path.join(folder, "out.ply")
             texture = os.path.join(folder, "out.mqt")
             args = [self.executable, "synth", "--swatch", swatch, "--base", base, "--scale", str(self.scale),
-                    "--seed", str(self.seed), "--progress", "json", "--write-texture", texture, "-o", out]
+                    "--seed", str(self.seed), "--progress", "json", "--write-texture", texture, "--provenance",
+                    "-o", out]
             if self.shell_height > 0.0:
                 args += ["--shell-height", str(self.shell_height)]
             if not self.minimize_distortion:
