@@ -12,6 +12,7 @@ bl_info = {
     "category": "Mesh",
 }
 
+import hashlib
 import os
 import tempfile
 
@@ -44,7 +45,8 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
                                              poll=lambda self, obj: obj.type == "MESH",
                                              description="A mesh object as the swatch; empty: a built-in one")
     swatch_kind: bpy.props.EnumProperty(name="Built-in", items=BUILT_IN, default="chainmail")
-    small: bpy.props.BoolProperty(name="Small preset", default=True, description="Test-sized built-in swatch")
+    small: bpy.props.BoolProperty(name="Test-sized", default=False,
+                                  description="The built-in swatch's small preset, for quick trials")
     scale: bpy.props.FloatProperty(name="Scale", default=0.15, min=0.001, max=10.0,
                                    description="Swatch's longer side over the base's bounding-box diagonal")
     seed: bpy.props.IntProperty(name="Seed", default=1, min=0)
@@ -250,7 +252,8 @@ def store_texture(obj, data):
     they would make the .blend several times larger)."""
     folder = texture_folder()
     os.makedirs(bpy.path.abspath(folder), exist_ok=True)
-    path = folder + "/" + bpy.path.clean_name(obj.name) + ".mqt"
+    # Named by content too: after Update and an undo, the restored result finds its own layer.
+    path = "%s/%s_%s.mqt" % (folder, bpy.path.clean_name(obj.name), hashlib.sha1(data).hexdigest()[:12])
     with open(bpy.path.abspath(path), "wb") as out:
         out.write(data)
     obj["meshquilt_texture_file"] = path
@@ -357,7 +360,7 @@ class JobOperator:
         if event.type == "TIMER":
             wm.progress_update(int(100 * self._job.share))
             left = self._job.seconds_left
-            context.workspace.status_text_set("meshquilt: %d%%%s" % (
+            context.workspace.status_text_set("meshquilt: %d%%%s. Esc to cancel" % (
                 100 * self._job.share, ", %.0f s left" % left if left >= 0 else ""))
             if self._job.done.is_set():
                 return self._finish(context)
@@ -412,8 +415,141 @@ class MESHQUILT_OT_create(JobOperator, bpy.types.Operator):
             self.report({"WARNING"}, "meshquilt: the base was deleted while quilting; nothing added")
             return {"CANCELLED"}
         obj = add_result_object(context, self._base, result, look=self._look, kind=self._kind)
+        remember_job(obj, context)
         self.report({"INFO"}, "meshquilt: %d faces in %s" % (len(result["faces"]), obj.name))
         return {"FINISHED"}
+
+
+# The panel's settings a result remembers, so that Update can show and re-run its job.
+JOB_SETTINGS = ("swatch_kind", "small", "scale", "seed", "minimize_distortion", "shell_height")
+
+
+def remember_job(obj, context):
+    """The job's settings on the result, a few numbers and names (never meshes)."""
+    s = settings_of(context)
+    obj["meshquilt_job"] = {name: getattr(s, name) for name in JOB_SETTINGS}
+    obj["meshquilt_job"]["swatch_object"] = s.swatch_object.name if s.swatch_object else ""
+    obj["meshquilt_job"]["guide_object"] = s.guide_object.name if s.guide_object else ""
+
+
+def is_result(obj):
+    return obj is not None and "meshquilt_job" in obj
+
+
+class MESHQUILT_OT_recall(bpy.types.Operator):
+    """Put the active result's settings back in the panel, to change them before Update"""
+    bl_idname = "meshquilt.recall"
+    bl_label = "Recall its settings"
+    bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return is_result(context.active_object)
+
+    def execute(self, context):
+        s, job = settings_of(context), context.active_object["meshquilt_job"]
+        for name in JOB_SETTINGS:
+            setattr(s, name, job[name])
+        s.swatch_object = bpy.data.objects.get(job["swatch_object"]) if job["swatch_object"] else None
+        s.guide_object = bpy.data.objects.get(job["guide_object"]) if job["guide_object"] else None
+        return {"FINISHED"}
+
+
+class MESHQUILT_OT_update(JobOperator, bpy.types.Operator):
+    """Quilt the active result's base again with the panel's settings and put the new texture in
+    the result itself (its transform, modifiers and name stay); one undo step, Esc cancels"""
+    bl_idname = "meshquilt.update"
+    bl_label = "Update"
+    bl_options = {"REGISTER", "UNDO"}
+
+    _result = None
+    _base = None
+    _look = None
+    _kind = None
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return is_result(obj) and obj.get("meshquilt_base") in bpy.data.objects
+
+    def _start(self, context):
+        self._result = context.active_object
+        self._base = bpy.data.objects[self._result["meshquilt_base"]]
+        s = settings_of(context)
+        self._look = swatch_look(s.swatch_object) if s.swatch_object else None
+        self._kind = None if s.swatch_object else s.swatch_kind
+        return make_job(context, self._base).start()
+
+    def _apply(self, context, result):
+        if not still_there(self._base) or not still_there(self._result):
+            self.report({"WARNING"}, "meshquilt: the base or the result was deleted meanwhile; nothing changed")
+            return {"CANCELLED"}
+        # Built as a new object, then its mesh moved into the result and the stand-in removed.
+        made = add_result_object(context, self._base, result, look=self._look, kind=self._kind)
+        old = self._result.data
+        self._result.data = made.data
+        self._result.data.name = old.name
+        for key in ("meshquilt_texture_file",):
+            if key in made:
+                self._result[key] = made[key]
+        bpy.data.objects.remove(made)
+        if old.users == 0:
+            bpy.data.meshes.remove(old)
+        remember_job(self._result, context)
+        for other in context.selected_objects:
+            other.select_set(False)
+        self._result.select_set(True)
+        context.view_layer.objects.active = self._result
+        self.report({"INFO"}, "meshquilt: %s updated, %d faces" % (self._result.name, len(result["faces"])))
+        return {"FINISHED"}
+
+
+_measures = {}
+
+
+def _measured(key, compute):
+    """compute() once per key: the panel redraws often, and swatches and bases rarely change."""
+    if key not in _measures:
+        if len(_measures) > 64:
+            _measures.clear()
+        _measures[key] = compute()
+    return _measures[key]
+
+
+def _area(vertices, faces):
+    return 0.5 * np.linalg.norm(np.cross(vertices[faces[:, 1]] - vertices[faces[:, 0]],
+                                         vertices[faces[:, 2]] - vertices[faces[:, 0]]), axis=1).sum()
+
+
+def estimate(context):
+    """(faces, elements or None) a Create would make with the panel's settings over the active
+    mesh: the swatch's faces (and elements) times the base's area over the swatch's x-y area at
+    the scale. None where it cannot be told (no module for a built-in swatch)."""
+    s, base = settings_of(context), context.active_object
+    if s.swatch_object:
+        swatch_key = ("object", s.swatch_object.name, len(s.swatch_object.data.polygons))
+
+        def measure_swatch():
+            vertices, faces = mesh_arrays(s.swatch_object)
+            return len(faces), None, np.sort(np.ptp(vertices, axis=0))
+    else:
+        module = quilt_job.import_module(preferences(context).module_path if preferences(context) else "")
+        if module is None:
+            return None
+        swatch_key = ("kind", s.swatch_kind, s.small)
+
+        def measure_swatch():
+            made = module.swatch(s.swatch_kind, preset="small" if s.small else "default")
+            return len(made.faces), len(np.unique(made.element)), np.sort(np.ptp(made.vertices, axis=0))
+    faces, elements, extent = _measured(swatch_key, measure_swatch)
+    area, diagonal = _measured(("base", base.name, base.data.name, len(base.data.polygons)),
+                               lambda: (lambda v, f: (_area(v, f), np.linalg.norm(np.ptp(v, axis=0))))(
+                                   *mesh_arrays(base)))
+    if faces == 0 or extent[2] <= 0.0 or extent[1] <= 0.0:
+        return None
+    factor = s.scale * diagonal / extent[2]  # the longer side becomes scale x the diagonal
+    copies = area / (extent[1] * extent[2] * factor * factor)
+    return int(faces * copies), (int(elements * copies) if elements else None)
 
 
 def image_array(image):
@@ -459,6 +595,7 @@ class MESHQUILT_OT_paint(JobOperator, bpy.types.Operator):
     relief height, raise the image's luma over it instead (a new object either way). Esc cancels"""
     bl_idname = "meshquilt.paint"
     bl_label = "Paint from image"
+    bl_options = {"REGISTER", "UNDO"}
 
     _base = None
     _relief = False
@@ -484,6 +621,9 @@ class MESHQUILT_OT_paint(JobOperator, bpy.types.Operator):
                                   field=field, relief_height=s.relief_height, sample_width=sample_width).start()
 
     def _apply(self, context, result):
+        if not still_there(self._base):
+            self.report({"WARNING"}, "meshquilt: the base was deleted while painting; nothing added")
+            return {"CANCELLED"}
         obj = add_painted_object(context, self._base, result, "relief" if self._relief else "painted")
         self.report({"INFO"}, "meshquilt: %d vertices in %s" % (len(result.vertices), obj.name))
         return {"FINISHED"}
@@ -780,41 +920,103 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
     bl_label = "meshquilt"
 
     def draw(self, context):
-        s, layout = settings_of(context), self.layout
+        layout = self.layout
+        layout.use_property_split = True
         layout.operator_menu_enum(MESHQUILT_OT_sample_scene.bl_idname, "sample", text="Sample scene")
-        layout.label(text="Base: " + (context.active_object.name if context.active_object else "none"))
-        layout.prop(s, "swatch_object")
+        obj = context.active_object
+        if is_result(obj):
+            layout.label(text="Result of " + obj.get("meshquilt_base", "?"), icon="MOD_ARRAY")
+            row = layout.row(align=True)
+            row.operator(MESHQUILT_OT_recall.bl_idname, text="Recall")
+            row.operator(MESHQUILT_OT_update.bl_idname)
+            return
+        layout.label(text="Base: " + (obj.name if obj else "none"), icon="MESH_DATA")
+        made = estimate(context) if obj is not None and obj.type == "MESH" else None
+        if made:
+            faces, elements = made
+            layout.label(text="About %s faces%s" % (format(faces, ","),
+                                                      ", %s elements" % format(elements, ",") if elements else ""))
+        layout.operator(MESHQUILT_OT_create.bl_idname)
+
+
+class MeshquiltSubPanel:
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "meshquilt"
+    bl_parent_id = "VIEW3D_PT_meshquilt"
+
+
+class VIEW3D_PT_meshquilt_swatch(MeshquiltSubPanel, bpy.types.Panel):
+    bl_label = "Swatch"
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
+        layout.use_property_split = True
+        layout.prop(s, "swatch_object", text="Object")
         if not s.swatch_object:
             layout.prop(s, "swatch_kind")
             layout.prop(s, "small")
+
+
+class VIEW3D_PT_meshquilt_placement(MeshquiltSubPanel, bpy.types.Panel):
+    bl_label = "Placement"
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
+        layout.use_property_split = True
         layout.prop(s, "scale")
         layout.prop(s, "seed")
         layout.prop(s, "minimize_distortion")
         layout.prop(s, "shell_height")
+
+
+class VIEW3D_PT_meshquilt_field(MeshquiltSubPanel, bpy.types.Panel):
+    bl_label = "Field"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
         row = layout.row(align=True)
         row.prop(s, "guide_object")
         row.operator(MESHQUILT_OT_preview_field.bl_idname, text="", icon="ORIENTATION_NORMAL")
-        layout.operator(MESHQUILT_OT_create.bl_idname)
+
+
+class VIEW3D_PT_meshquilt_result(MeshquiltSubPanel, bpy.types.Panel):
+    bl_label = "Result"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
         layout.operator(MESHQUILT_OT_follow_base.bl_idname)
         layout.operator(MESHQUILT_OT_follow_frames.bl_idname)
         row = layout.row(align=True)
         row.operator(MESHQUILT_OT_animate.bl_idname)
         if not s.swatch_object and s.swatch_kind == "vine":
             row.prop(s, "frames")
-        box = layout.box()
-        box.prop(s, "select_share")
-        box.operator(MESHQUILT_OT_select.bl_idname).mode = "RANDOM"
-        box = layout.box()
-        box.template_ID(s, "paint_image", open="image.open")
-        box.prop(s, "paint_scale")
-        box.prop(s, "paint_pixels")
-        box.prop(s, "relief_height")
-        box.operator(MESHQUILT_OT_paint.bl_idname)
+        row = layout.row(align=True)
+        row.prop(s, "select_share")
+        row.operator(MESHQUILT_OT_select.bl_idname, text="Select").mode = "RANDOM"
 
 
-classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_select, MESHQUILT_OT_follow_base,
-           MESHQUILT_OT_preview_field, MESHQUILT_OT_animate, MESHQUILT_OT_sample_scene,
-           MESHQUILT_OT_follow_frames, MESHQUILT_OT_paint, VIEW3D_PT_meshquilt)
+class VIEW3D_PT_meshquilt_paint(MeshquiltSubPanel, bpy.types.Panel):
+    bl_label = "Paint"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
+        layout.template_ID(s, "paint_image", open="image.open")
+        layout.use_property_split = True
+        layout.prop(s, "paint_scale")
+        layout.prop(s, "paint_pixels")
+        layout.prop(s, "relief_height")
+        layout.operator(MESHQUILT_OT_paint.bl_idname)
+
+
+classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_update, MESHQUILT_OT_recall,
+           MESHQUILT_OT_select, MESHQUILT_OT_follow_base, MESHQUILT_OT_preview_field, MESHQUILT_OT_animate,
+           MESHQUILT_OT_sample_scene, MESHQUILT_OT_follow_frames, MESHQUILT_OT_paint, VIEW3D_PT_meshquilt,
+           VIEW3D_PT_meshquilt_swatch, VIEW3D_PT_meshquilt_placement, VIEW3D_PT_meshquilt_field,
+           VIEW3D_PT_meshquilt_result, VIEW3D_PT_meshquilt_paint)
 
 
 def register():

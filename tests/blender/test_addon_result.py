@@ -99,8 +99,30 @@ check(abs(sphere.location.x - 3.0) < 1e-9, "and keeps the move before it")
 # The default job: the built-in chain mail, full size, over the sphere at 0.2.
 settings.swatch_object, settings.small, settings.scale = None, False, 0.2
 bpy.context.view_layer.objects.active = sphere
-check(bpy.ops.meshquilt.create() == {"FINISHED"}, "the default job finishes")
+guess = meshquilt_blender.estimate(bpy.context)
+check(bpy.ops.meshquilt.create("EXEC_DEFAULT", True) == {"FINISHED"}, "the default job finishes")
 default = bpy.context.view_layer.objects.active
+made = len(default.data.polygons)
+check(guess is not None and 0.5 * made <= guess[0] <= 2.0 * made,
+      "the estimate before Create (%s faces) is within 2x of what it made (%d)" % (guess and guess[0], made))
+
+# Update: the result's job again with changed settings, in the same object; one undo brings the
+# old texture back. Recall puts the result's settings back in the panel.
+name = default.name
+settings.scale = 0.3
+check(bpy.ops.meshquilt.update("EXEC_DEFAULT", True) == {"FINISHED"}, "Update finishes")
+default = bpy.data.objects[name]
+check(bpy.context.view_layer.objects.active == default and len(default.data.polygons) < made
+      and abs(default["meshquilt_job"]["scale"] - 0.3) < 1e-6, "Update quilts again in place at the new scale")
+bpy.ops.ed.undo()
+default = bpy.data.objects[name]
+settings = bpy.context.scene.meshquilt
+check(len(default.data.polygons) == made, "one undo brings the result before Update back")
+settings.scale = 0.7
+bpy.context.view_layer.objects.active = default
+check(bpy.ops.meshquilt.recall() == {"FINISHED"} and abs(settings.scale - 0.2) < 1e-6,
+      "Recall puts the result's settings in the panel")
+sphere = bpy.data.objects[sphere_name]
 check(default != sphere and default.data.materials[0].name == "meshquilt chainmail"
       and default.data.materials[0].metallic == 1.0, "the built-in mail comes in metal")
 smooth = np.empty(len(default.data.polygons), dtype=bool)
