@@ -86,7 +86,9 @@ def module_or_report(operator, context, what):
     prefs = preferences(context)
     module = quilt_job.import_module(prefs.module_path if prefs else "")
     if module is None:
-        operator.report({"ERROR"}, "meshquilt: %s needs the Python module (see the preferences)" % what)
+        operator.report({"ERROR"}, "meshquilt: %s needs the Python module: set Preferences > Add-ons > meshquilt > "
+                                   "Module folder (build/python of a build), or install the zip of "
+                                   "scripts/blender_addon.sh" % what)
     return module
 
 

@@ -11,11 +11,29 @@ import threading
 import numpy as np
 
 
+# Where scripts/blender_addon.sh puts the module inside the add-on.
+BUNDLED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "module")
+
+
+def module_folder(path):
+    """`path` as a folder: Blender's "//" relative to the .blend, others relative to the current
+    folder; "" stays "" (the preference unset)."""
+    if not path:
+        return ""
+    try:
+        import bpy
+        path = bpy.path.abspath(path)
+    except ImportError:
+        pass
+    return os.path.abspath(os.path.expanduser(path))
+
+
 def import_module(path=""):
-    """The module `meshquilt` from `path` (a folder holding the package) or the usual places; None
-    when it is not there."""
-    if path and path not in sys.path:
-        sys.path.insert(0, path)
+    """The module `meshquilt`: bundled in the add-on, from `path` (a folder holding the package),
+    or from the usual places; None when it is nowhere."""
+    for folder in (BUNDLED, module_folder(path)):
+        if folder and os.path.isdir(os.path.join(folder, "meshquilt")) and folder not in sys.path:
+            sys.path.insert(0, folder)
     try:
         import meshquilt  # noqa: F401
         return meshquilt
@@ -108,6 +126,7 @@ class QuiltJob(BackgroundJob):
     def __init__(self, base, swatch=None, swatch_kind="chainmail", swatch_options=None, scale=0.15, seed=1,
                  minimize_distortion=True, shell_height=0.0, module_path="", executable="meshquilt", field=None):
         super().__init__(import_module(module_path))
+        self.module_path = module_path
         self.base = base  # (vertices, faces) as numpy arrays
         self.field = field  # (points, directions) drawn over the base, or None for the default field
         self.swatch = swatch  # (vertices, faces), or None for a built-in kind
@@ -118,7 +137,16 @@ class QuiltJob(BackgroundJob):
         self.executable = executable
 
     def _work(self):
-        return self._run_module() if self.module is not None else self._run_executable()
+        if self.module is not None:
+            return self._run_module()
+        try:
+            return self._run_executable()
+        except FileNotFoundError:
+            raise RuntimeError(
+                "neither the Python module (Preferences > Add-ons > meshquilt > Module folder: %s) nor the "
+                "executable '%s' was found; install the zip of scripts/blender_addon.sh, or set either "
+                "preference" % ("'%s' holds no package meshquilt" % self.module_path if self.module_path else "unset",
+                                self.executable)) from None
 
     def _run_module(self):
         m = self.module
