@@ -54,6 +54,9 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
     shell_height: bpy.props.FloatProperty(name="Shell height", default=0.0, min=0.0,
                                           description="Layer height in base units (0: the swatch's own)")
     select_share: bpy.props.FloatProperty(name="Share", default=0.1, min=0.0, max=1.0)
+    job_running: bpy.props.BoolProperty(name="Running", default=False, options={"SKIP_SAVE"})
+    job_progress: bpy.props.FloatProperty(name="Done", default=0.0, min=0.0, max=100.0, subtype="PERCENTAGE",
+                                          options={"SKIP_SAVE"}, description="Share of the running job done")
     frames: bpy.props.IntProperty(name="Frames", default=12, min=1, max=1000,
                                   description="Frames of the built-in vine's sway cycle")
     paint_image: bpy.props.PointerProperty(name="Image", type=bpy.types.Image,
@@ -344,6 +347,8 @@ class JobOperator:
         self._timer = wm.event_timer_add(0.2, window=context.window)
         wm.progress_begin(0, 100)
         wm.modal_handler_add(self)
+        s = settings_of(context)
+        s.job_running, s.job_progress = True, 0.0
         return {"RUNNING_MODAL"}
 
     def execute(self, context):
@@ -361,6 +366,10 @@ class JobOperator:
             return self._finish(context)
         if event.type == "TIMER":
             wm.progress_update(int(100 * self._job.share))
+            settings_of(context).job_progress = 100.0 * self._job.share
+            for area in context.screen.areas if context.screen else []:
+                if area.type == "VIEW_3D":
+                    area.tag_redraw()
             left = self._job.seconds_left
             context.workspace.status_text_set("meshquilt: %d%%%s. Esc to cancel" % (
                 100 * self._job.share, ", %.0f s left" % left if left >= 0 else ""))
@@ -374,6 +383,7 @@ class JobOperator:
             wm.event_timer_remove(self._timer)
             wm.progress_end()
             context.workspace.status_text_set(None)
+            settings_of(context).job_running = False
         if self._job.cancelled:
             self.report({"INFO"}, "meshquilt: cancelled; nothing changed")
             return {"CANCELLED"}
@@ -608,8 +618,12 @@ class MESHQUILT_OT_paint(JobOperator, bpy.types.Operator):
 
     def _start(self, context):
         s = settings_of(context)
-        if s.paint_image is None or s.paint_image.size[0] == 0:
+        if s.paint_image is None:
             self.report({"ERROR"}, "meshquilt: choose an image to paint from")
+            return None
+        if s.paint_image.size[0] == 0:
+            self.report({"ERROR"}, "meshquilt: Blender cannot read the image '%s' (%s); use PNG or JPEG"
+                        % (s.paint_image.name, s.paint_image.filepath or "no file"))
             return None
         module = module_or_report(self, context, "painting")
         if module is None:
@@ -932,12 +946,20 @@ class VIEW3D_PT_meshquilt(bpy.types.Panel):
             row.operator(MESHQUILT_OT_recall.bl_idname, text="Recall")
             row.operator(MESHQUILT_OT_update.bl_idname)
             return
+        s = settings_of(context)
+        if s.job_running:
+            row = layout.row()
+            row.enabled = False
+            row.prop(s, "job_progress", text="Quilting", slider=True)
+            layout.label(text="Esc to cancel", icon="CANCEL")
+            return
         layout.label(text="Base: " + (obj.name if obj else "none"), icon="MESH_DATA")
         made = estimate(context) if obj is not None and obj.type == "MESH" else None
         if made:
             faces, elements = made
-            layout.label(text="About %s faces%s" % (format(faces, ","),
-                                                      ", %s elements" % format(elements, ",") if elements else ""))
+            layout.label(text="About %s faces" % format(faces, ","))
+            if elements:
+                layout.label(text="About %s elements" % format(elements, ","))
         layout.operator(MESHQUILT_OT_create.bl_idname)
 
 
@@ -968,8 +990,9 @@ class VIEW3D_PT_meshquilt_placement(MeshquiltSubPanel, bpy.types.Panel):
         layout.use_property_split = True
         layout.prop(s, "scale")
         layout.prop(s, "seed")
+        layout.prop(s, "shell_height", text="Height")
+        layout.use_property_split = False
         layout.prop(s, "minimize_distortion")
-        layout.prop(s, "shell_height")
 
 
 class VIEW3D_PT_meshquilt_field(MeshquiltSubPanel, bpy.types.Panel):
