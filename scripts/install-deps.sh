@@ -14,11 +14,11 @@ packages=(
 )
 # With --tests, what only the tests need: tests/foreign/make_swatches.py builds foreign swatches
 # with numpy, tests/paint/field_stripes.py solves for reference stripes with scipy, and the Python module (built when pybind11 is there) is tested with pytest and
-# installed with pip into a venv, and the Blender add-on runs headless in Debian's Blender (the
-# build and every job run without them).
+# installed with pip into a venv, and the Blender add-on runs headless in Debian's Blender and in
+# its window under Xvfb (the build and every job run without them).
 if [ "${1:-}" = "--tests" ]; then
   packages+=(python3-numpy python3-scipy python3-dev python3-pybind11 pybind11-dev python3-pytest python3-venv python3-pip
-             python3-setuptools python3-wheel blender)
+             python3-setuptools python3-wheel blender xvfb xauth)
 fi
 missing=()
 for p in "${packages[@]}"; do

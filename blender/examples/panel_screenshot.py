@@ -57,6 +57,7 @@ def step():
         if not state.get("progress"):
             bpy.ops.wm.redraw_timer(type="DRAW_WIN_SWAP", iterations=1)
             bpy.ops.screen.screenshot(filepath=progress_out)
+            print("in progress:", bpy.context.scene.meshquilt.job_running)
             state["progress"] = True
             return 0.5
         if "Sphere_quilt" not in bpy.data.objects and state["waited"] < 480:

@@ -7,6 +7,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import time
 
 import numpy as np
 
@@ -75,12 +76,13 @@ def read_binary_ply(path):
 
 class BackgroundJob:
     """Runs `_work` on a worker thread. `share` and `seconds_left` follow its progress; `result`
-    holds what it returned when `done` and no `error`; cancel() stops it and leaves `cancelled`
-    set."""
+    holds what it returned when `done` and no `error`, `seconds` how long that took; cancel()
+    stops it and leaves `cancelled` set."""
 
     def __init__(self, module):
         self.module = module
         self.share, self.seconds_left = 0.0, -1.0
+        self.seconds = 0.0  # how long _work took
         self.result, self.error, self.cancelled = None, None, False
         self.done = threading.Event()
         self._token = self.module.CancelToken() if self.module else None
@@ -106,8 +108,10 @@ class BackgroundJob:
         self.share, self.seconds_left = share, seconds_left
 
     def _run(self):
+        begun = time.monotonic()
         try:
             self.result = self._work()
+            self.seconds = time.monotonic() - begun
         except Exception as error:  # reported to the operator, which leaves the scene as it was
             if not self.cancelled:
                 self.error = str(error)

@@ -103,6 +103,7 @@ guess = meshquilt_blender.estimate(bpy.context)
 check(bpy.ops.meshquilt.create("EXEC_DEFAULT", True) == {"FINISHED"}, "the default job finishes")
 default = bpy.context.view_layer.objects.active
 made = len(default.data.polygons)
+check(meshquilt_blender._measures.get("faces_per_second", 0) > 0, "the pace of the run is kept for the next estimate")
 check(guess is not None and 0.5 * made <= guess[0] <= 2.0 * made,
       "the estimate before Create (%s faces) is within 2x of what it made (%d)" % (guess and guess[0], made))
 
