@@ -4,13 +4,11 @@
 #include <cstdio>
 #include <iostream>
 
-#include <glm/geometric.hpp>
-
 #include "atomic_file.h"
 #include "core/error.h"
 #include "exit_codes.h"
+#include "jobs/image_jobs.h"
 #include "mesh/base_mesh.h"
-#include "mesh/measures.h"
 #include "mesh/mesh_io.h"
 
 namespace meshquilt::cli {
@@ -19,8 +17,7 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
                                                  const std::string& field, double scale, double pixels_per_unit,
                                                  int sample_width, const std::string& output,
                                                  const std::string& stats) {
-  if (!(scale > 0.0 && scale <= 10.0))
-    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
+  check_sample_scale(scale, pixels_per_unit);
   check_mesh_output(output);
   check_writable(output);
   if (!stats.empty()) check_writable(stats);
@@ -31,8 +28,8 @@ ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const 
   if (!image.empty()) in.sample = read_colour_image(image);
   if (!image.empty() && sample_width > 0) in.sample = shrunk_to_width(in.sample, sample_width);
   if (!field.empty()) in.constraints = read_field_file(field, in.base);
-  in.diagonal = glm::length(bounding_box(in.base.positions).extent());
-  in.pixels_per_unit = pixels_per_unit > 0.0 ? pixels_per_unit : in.sample.width / (scale * in.diagonal);
+  // A model's detail (relief --from) is sized when it is made.
+  if (!image.empty()) in.pixels_per_unit = sample_pixels_per_unit(in.base, in.sample.width, scale, pixels_per_unit);
   return in;
 }
 

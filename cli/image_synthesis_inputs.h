@@ -20,14 +20,13 @@ struct ImageSynthesisInputs {
   TriMesh base;                            //!< prepared as synth prepares a base
   ColourImage sample;
   std::vector<FieldConstraint> constraints;  //!< from the field file; empty: the default field
-  double pixels_per_unit = 0.0;            //!< sample pixels per base unit
-  double diagonal = 0.0;                   //!< the base's bounding-box diagonal
+  double pixels_per_unit = 0.0;            //!< sample pixels per base unit (0 without an image)
 };
 
 //! Checks the output and stats paths, then reads the inputs (the sample left empty when `image`
 //! is), the sample shrunk to sample_width pixels across (its aspect kept) when that is > 0.
 //! pixels_per_unit > 0 is taken as given; otherwise --scale S makes the sample's width S x the
-//! base's bounding-box diagonal.
+//! base's bounding-box diagonal (jobs/image_jobs.h).
 //! \throw InputError for a scale outside (0, 10] or a sample width past the image's; what the
 //!        readers throw.
 ImageSynthesisInputs read_image_synthesis_inputs(const std::string& base, const std::string& image,

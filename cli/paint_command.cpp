@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "image_synthesis_inputs.h"
+#include "jobs/image_jobs.h"
 #include "mesh/mesh_io.h"
 #include "paint/colour_atlas.h"
 #include "paint/surface_paint.h"
@@ -54,22 +55,11 @@ void run_paint(PaintArgs& args) {
     write_mesh(painted.mesh, args.output, WriteOptions{.cancel = &interrupt_token()});
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json summary = {{"base", args.base},
-                                  {"image", args.image},
-                                  {"output", args.output},
-                                  {"sample", {in.sample.width, in.sample.height}},
-                                  {"pixels_per_unit", args.options.pixels_per_unit},
-                                  {"levels", painted.levels},
-                                  {"sample_levels", painted.sample_levels},
-                                  {"vertices", painted.mesh.num_vertices()},
-                                  {"faces", painted.mesh.num_faces()},
-                                  {"mean_cost", painted.mean_cost},
-                                  {"visits", painted.visits},
-                                  {"batches", painted.batches},
-                                  {"neighbours", painted.neighbours},
-                                  {"backend", engine::backend_name(device->backend())},
-                                  {"device", device->name()},
-                                  {"seconds", seconds}};
+  nlohmann::json summary = paint_stats(painted, args.options, in.sample, *device);
+  summary["base"] = args.base;
+  summary["image"] = args.image;
+  summary["output"] = args.output;
+  summary["seconds"] = seconds;
   if (!baked.is_null()) summary["atlas"] = baked;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   if (!args.write_field.empty()) write_field_lines(args.write_field, painted.directions);

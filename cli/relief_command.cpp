@@ -19,6 +19,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "image_synthesis_inputs.h"
+#include "jobs/image_jobs.h"
 #include "mesh/mesh_io.h"
 #include "mesh/base_mesh.h"
 #include "mesh/measures.h"
@@ -41,22 +42,19 @@ nlohmann::json sample_from_model(ReliefArgs& args, ImageSynthesisInputs& in, boo
     throw InputError("--region: expected X,Y,Z,RADIUS in model units", ErrorKind::invalid_option);
   std::optional<DetailRegion> region;
   if (!args.region.empty()) region = DetailRegion{Vec3(args.region[0], args.region[1], args.region[2]), args.region[3]};
-  DetailSample sample;
+  ModelSample sample;
   try {
-    sample = detail_sample(model, args.smoothing, region, args.pixels);
+    sample = model_sample(model, args.smoothing, region, args.pixels, in.base, args.scale,
+                          ppu_given ? args.pixels_per_unit : 0.0);
   } catch (const InputError& e) {
     throw InputError(args.model + ": " + e.text(), e.kind());  // the one model file the error is about
   }
-  const DetailImage& detail = sample.detail;
-  in.sample = detail.image;
-  // As --image: the sample's width --scale x the base's diagonal; heights scale with widths.
-  if (!ppu_given) in.pixels_per_unit = args.pixels / (args.scale * in.diagonal);
-  if (!height_given) args.options.height = detail.height_over(in.pixels_per_unit);
-  return {{"model", args.model},
-          {"smoothing", sample.smoothing},
-          {"region", {sample.centre.x, sample.centre.y, sample.centre.z, sample.radius}},
-          {"detail_low", detail.low},
-          {"detail_high", detail.high}};
+  in.sample = sample.image;
+  in.pixels_per_unit = sample.pixels_per_unit;
+  if (!height_given) args.options.height = sample.height;
+  nlohmann::json from = sample.from;
+  from["model"] = args.model;
+  return from;
 }
 
 // The sample's luma, as relief reads it, as a 16-bit plain PGM.
@@ -94,22 +92,12 @@ void run_relief(ReliefArgs& args, bool height_given) {
                  args.base.c_str(), relief.crossing_left, relief.crossing_left == 1 ? "" : "s");
   if (!args.write_field.empty()) write_field_lines(args.write_field, relief.directions);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  double highest = 0.0;
-  for (double h : relief.heights) highest = std::max(highest, h);
-  nlohmann::json summary = {{"base", args.base},
-                                  {"image", args.image},
-                                  {"output", args.output},
-                                  {"pixels_per_unit", args.options.paint.pixels_per_unit},
-                                  {"levels", relief.levels},
-                                  {"vertices", relief.mesh.num_vertices()},
-                                  {"faces", relief.mesh.num_faces()},
-                                  {"height", args.options.height},
-                                  {"highest", highest},
-                                  {"clamped_vertices", relief.clamped},
-                                  {"crossing_lowered_vertices", relief.lowered_crossing},
-                                  {"crossing_face_pairs_left", relief.crossing_left},
-                                  {"backend", engine::backend_name(device->backend())},
-                                  {"seconds", seconds}};
+  nlohmann::json summary = relief_stats(relief, args.options, *device);
+  summary["base"] = args.base;
+  summary["image"] = args.image;
+  summary["output"] = args.output;
+  summary["seconds"] = seconds;
+  const double highest = summary["highest"].get<double>();
   if (!from.is_null()) summary["from"] = from;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   progress.finish(summary.dump());

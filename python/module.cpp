@@ -20,6 +20,7 @@
 #include "edit/swatch_animation.h"
 #include "inspect/inspect_report.h"
 #include "core/atomic_write.h"
+#include "jobs/image_jobs.h"
 #include "jobs/synth_job.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
@@ -245,14 +246,6 @@ ColourImage sample_image(const py::array_t<double, py::array::c_style | py::arra
   return sample_width > 0 ? shrunk_to_width(sample, sample_width) : sample;
 }
 
-// Sample pixels per base unit: given, or the sample's width `scale` x the base's diagonal.
-double sample_pixels_per_unit(const TriMesh& base, int width, double scale, double pixels_per_unit) {
-  if (pixels_per_unit > 0.0) return pixels_per_unit;
-  if (!(scale > 0.0 && scale <= 10.0))
-    throw InputError("--scale: expected a value in (0, 10], got " + std::to_string(scale), ErrorKind::invalid_option);
-  return width / (scale * glm::length(bounding_box(base.positions).extent()));
-}
-
 PYBIND11_MODULE(_meshquilt, m) {
   m.doc() = "meshquilt: grows 3D geometric textures over planes and meshes by mesh quilting";
   static py::exception<Error> error(m, "Error", PyExc_RuntimeError);
@@ -350,6 +343,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         const TriMesh& result = outcome.mesh;
         nlohmann::json& stats = outcome.stats;
         stats["output"] = nullptr;  // the mesh comes back as arrays, not a file
+        stats["stages"]["write"] = 0.0;
         std::string texture;
         if (keep_texture && request.base)
           texture = format_texture(make_quilt_texture(inputs.base, result, outcome.local, outcome.shell_texture));
@@ -420,14 +414,9 @@ PYBIND11_MODULE(_meshquilt, m) {
         PaintResult painted;
         run_cancellable(job, [&] { painted = paint_surface(base, sample, constraints, options, *device); });
         py::dict out = dict_of(painted.mesh);
-        const nlohmann::json stats = {
-            {"pixels_per_unit", options.pixels_per_unit}, {"levels", painted.levels},
-            {"sample_levels", painted.sample_levels},
-            {"vertices", painted.mesh.num_vertices()},   {"faces", painted.mesh.num_faces()},
-            {"mean_cost", painted.mean_cost},             {"visits", painted.visits},
-            {"batches", painted.batches},                 {"neighbours", painted.neighbours},
-            {"backend", engine::backend_name(device->backend())},
-            {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+        nlohmann::json stats = paint_stats(painted, options, sample, *device);
+        stats["base"] = stats["image"] = stats["output"] = nullptr;  // arrays, not files
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         out["stats"] = json_to_python(stats);
         return out;
       },
@@ -467,16 +456,12 @@ PYBIND11_MODULE(_meshquilt, m) {
             throw InputError("relief: region must be (x, y, z, radius) in model units", ErrorKind::invalid_option);
           std::optional<DetailRegion> ball;
           if (region) ball = DetailRegion{Vec3((*region)[0], (*region)[1], (*region)[2]), (*region)[3]};
-          const DetailSample detail = detail_sample(model, smoothing, ball, pixels);
-          sample = detail.detail.image;
-          options.paint.pixels_per_unit = sample_pixels_per_unit(base, sample.width, scale, pixels_per_unit);
-          // Heights scale as widths do, unless a height is given.
-          if (!(height > 0.0))
-            options.height = detail.detail.height_over(options.paint.pixels_per_unit);
-          from = {{"smoothing", detail.smoothing},
-                  {"region", {detail.centre.x, detail.centre.y, detail.centre.z, detail.radius}},
-                  {"detail_low", detail.detail.low},
-                  {"detail_high", detail.detail.high}};
+          const ModelSample made = model_sample(model, smoothing, ball, pixels, base, scale, pixels_per_unit);
+          sample = made.image;
+          options.paint.pixels_per_unit = made.pixels_per_unit;
+          if (!(height > 0.0)) options.height = made.height;  // heights scale as widths do
+          from = made.from;
+          from["model"] = nullptr;
         }
         options.paint.window = window;
         options.paint.passes = passes;
@@ -493,19 +478,9 @@ PYBIND11_MODULE(_meshquilt, m) {
         py::array_t<double> heights(static_cast<py::ssize_t>(relief.heights.size()));
         std::copy(relief.heights.begin(), relief.heights.end(), heights.mutable_data());
         out["heights"] = heights;
-        double highest = 0.0;
-        for (double h : relief.heights) highest = std::max(highest, h);
-        nlohmann::json stats = {{"pixels_per_unit", options.paint.pixels_per_unit},
-                                {"levels", relief.levels},
-                                {"vertices", relief.mesh.num_vertices()},
-                                {"faces", relief.mesh.num_faces()},
-                                {"height", options.height},
-                                {"highest", highest},
-                                {"clamped_vertices", relief.clamped},
-                                {"crossing_lowered_vertices", relief.lowered_crossing},
-                                {"crossing_face_pairs_left", relief.crossing_left},
-                                {"backend", engine::backend_name(device->backend())},
-                                {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}};
+        nlohmann::json stats = relief_stats(relief, options, *device);
+        stats["base"] = stats["image"] = stats["output"] = nullptr;  // arrays, not files
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!from.is_null()) stats["from"] = from;
         out["stats"] = json_to_python(stats);
         return out;

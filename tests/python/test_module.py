@@ -126,11 +126,11 @@ def key_paths(tree, prefix=""):
 def test_synth_stats_have_the_command_lines_keys_and_values():
     plane = meshquilt.synth(plane=(2, 2), seed=1, backend="cpu").stats
     cli_plane = cli_stats("--plane", "2x2", "--seed", "1")
-    assert key_paths(plane) == key_paths(cli_plane) - {"stages.write"}
+    assert key_paths(plane) == key_paths(cli_plane)
     base = read_off(os.path.join(SOURCE, "data", "sphere.off"))
     curved = meshquilt.synth(base=base, scale=0.5, seed=2, backend="cpu").stats
     cli_curved = cli_stats("--base", os.path.join(SOURCE, "data", "sphere.off"), "--scale", "0.5", "--seed", "2")
-    assert key_paths(curved) == key_paths(cli_curved) - {"stages.write"}
+    assert key_paths(curved) == key_paths(cli_curved)
     for stats, cli in ((plane, cli_plane), (curved, cli_curved)):
         for key in ("faces", "vertices", "elements", "patches", "stitched_pairs", "lattice_copies", "holes"):
             assert stats[key] == cli[key], key
@@ -178,12 +178,16 @@ def test_paint_equals_the_command_line():
         image_path, out_path = os.path.join(folder, "sample.ppm"), os.path.join(folder, "out.ply")
         with open(image_path, "wb") as out:
             out.write(b"P6\n12 10\n255\n" + pixels.tobytes())
+        stats_path = os.path.join(folder, "stats.json")
         done = subprocess.run([CLI, "paint", "--base", os.path.join(SOURCE, "data", "sphere.off"), "--image", image_path,
                                "--scale", "0.5", "--coherence", "0.5", "--seed", "3", "--backend", "cpu", "--progress",
-                               "none", "-o", out_path],
+                               "none", "-o", out_path, "--stats", stats_path],
                               capture_output=True, text=True)
         assert done.returncode == 0, done.stderr
         ply = read_ply(out_path)
+        cli_stats_of_paint = json.load(open(stats_path))
+    assert key_paths(result.stats) == key_paths(cli_stats_of_paint)
+    assert all(result.stats[k] == cli_stats_of_paint[k] for k in ("vertices", "faces", "levels", "visits", "sample"))
     names, vertices = ply["vertex"]
     v = np.array([row[:3] for row in vertices], dtype=np.float64)
     colours = np.array([[row[names.index(c)] for c in ("red", "green", "blue")] for row in vertices], dtype=np.uint8)
@@ -228,14 +232,16 @@ def test_painted_colours_are_written_read_back_and_rendered_as_the_command_line_
             meshquilt.render(painted, os.path.join(folder, "x.png"), up="w")
 
 
-def cli_relief(*args):
+def cli_relief(*args, stats=None):
     with tempfile.TemporaryDirectory() as folder:
-        out_path = os.path.join(folder, "out.ply")
+        out_path, stats_path = os.path.join(folder, "out.ply"), os.path.join(folder, "stats.json")
         done = subprocess.run([CLI, "relief", "--base", os.path.join(SOURCE, "data", "sphere.off"), "--backend", "cpu",
-                               "--progress", "none", "-o", out_path] + [a(folder) if callable(a) else a for a in args],
-                              capture_output=True, text=True)
+                               "--progress", "none", "-o", out_path, "--stats", stats_path]
+                              + [a(folder) if callable(a) else a for a in args], capture_output=True, text=True)
         assert done.returncode == 0, done.stderr
         names, vertices = read_ply(out_path)["vertex"]
+        if stats is not None:
+            stats.update(json.load(open(stats_path)))
     return np.array([row[:3] for row in vertices], dtype=np.float64)
 
 
@@ -272,8 +278,11 @@ def test_relief_equals_the_command_line():
         return path
 
     from_model = meshquilt.relief(base, model=(bumpy, mf), pixels=16, scale=0.5, seed=2, backend="cpu")
+    cli_from_model = {}
     assert np.array_equal(from_model.vertices, cli_relief("--from", write_model, "--pixels", "16", "--scale", "0.5",
-                                                          "--seed", "2"))
+                                                          "--seed", "2", stats=cli_from_model))
+    assert key_paths(from_model.stats) == key_paths(cli_from_model)
+    assert from_model.stats["height"] == pytest.approx(cli_from_model["height"])
     taken = from_model.stats["from"]
     assert taken["detail_high"] > taken["detail_low"] and len(taken["region"]) == 4
     with pytest.raises(meshquilt.Error, match="one of"):
