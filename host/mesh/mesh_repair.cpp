@@ -128,7 +128,13 @@ int64_t close_t_junctions(Work& w, double tolerance) {
     open_vertices.erase(std::unique(open_vertices.begin(), open_vertices.end()), open_vertices.end());
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     const double cell = std::max(lengths[lengths.size() / 2], 4.0 * tolerance);
-    auto cell_of = [cell](const Vec3& p) { return glm::i64vec3(glm::floor(p / cell)); };
+    // Cells counted from the mesh's low corner and clamped, so that a far or huge coordinate
+    // cannot overflow a cell index (keys wrap; distances decide).
+    const Vec3 origin = bounding_box(m.positions).lo;
+    auto cell_of = [cell, origin](const Vec3& p) {
+      const Vec3 at = glm::clamp(glm::floor((p - origin) / cell), Vec3(0.0), Vec3(double(int64_t{1} << 40)));
+      return glm::i64vec3(at);
+    };
     auto key_of = [](const glm::i64vec3& c) {
       return static_cast<uint64_t>(c.x & 0x1fffff) | static_cast<uint64_t>(c.y & 0x1fffff) << 21 |
              static_cast<uint64_t>(c.z & 0x1fffff) << 42;
@@ -148,7 +154,8 @@ int64_t close_t_junctions(Work& w, double tolerance) {
       std::vector<std::pair<double, int32_t>> on_edge;
       const glm::i64vec3 lo = cell_of(glm::min(pa, m.positions[b]) - Vec3(tolerance));
       const glm::i64vec3 hi = cell_of(glm::max(pa, m.positions[b]) + Vec3(tolerance));
-      if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1) > 4096) continue;  // a stray long edge
+      const glm::dvec3 span = glm::dvec3(hi - lo) + 1.0;
+      if (span.x * span.y * span.z > 4096.0) continue;  // a stray long edge
       for (int64_t x = lo.x; x <= hi.x; ++x)
         for (int64_t y = lo.y; y <= hi.y; ++y)
           for (int64_t z = lo.z; z <= hi.z; ++z) {
