@@ -186,16 +186,38 @@ struct Job {
   std::exception_ptr callback_error;
 };
 
+// Seconds left at the pace since the first report: the set-up before it (the layout, the shell,
+// grids) is not spread over the rest of the job, which made the first figures run high.
+class TimeLeft {
+ public:
+  double operator()(double share) {
+    const auto now = std::chrono::steady_clock::now();
+    if (share >= 1.0) return 0.0;
+    if (!started_) {
+      started_ = true;
+      first_ = now;
+      first_share_ = share;
+      return -1.0;
+    }
+    const double done = share - first_share_;
+    if (!(done > 0.0)) return -1.0;
+    return std::chrono::duration<double>(now - first_).count() * (1.0 - share) / done;
+  }
+
+ private:
+  bool started_ = false;
+  std::chrono::steady_clock::time_point first_;
+  double first_share_ = 0.0;
+};
+
 // Paint's progress (visits made of all) as synth's callback takes it: the share done and the
 // seconds left. `callback` outlives the job, and is only called with the GIL held.
 std::function<void(size_t, size_t)> paint_progress(const std::optional<py::function>& callback, Job& job) {
   if (!callback) return {};
   const py::function* call = &*callback;
-  const auto begun = std::chrono::steady_clock::now();
-  return [&job, call, begun](size_t done, size_t total) {
+  return [&job, call, time_left = TimeLeft()](size_t done, size_t total) mutable {
     const double share = total > 0 ? std::min(1.0, static_cast<double>(done) / static_cast<double>(total)) : 0.0;
-    const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
-    const double left = share > 0.0 ? spent * (1.0 - share) / share : -1.0;
+    const double left = time_left(share);
     py::gil_scoped_acquire gil;
     try {
       (*call)(share, left);
@@ -312,14 +334,11 @@ PYBIND11_MODULE(_meshquilt, m) {
         if (cancel) job.token = cancel;
         SynthHooks hooks;
         hooks.cancel = job.token;
-        const auto begun = std::chrono::steady_clock::now();
         if (progress) {
           py::function callback = *progress;
-          hooks.progress = [&job, callback, begun](const QuiltProgress& p) {
+          hooks.progress = [&job, callback, time_left = TimeLeft()](const QuiltProgress& p) mutable {
             const double share = p.total_area > 0.0 ? std::min(1.0, p.covered_area / p.total_area) : 0.0;
-            const double spent =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
-            const double left = share > 0.0 ? spent * (1.0 - share) / share : -1.0;
+            const double left = time_left(share);
             py::gil_scoped_acquire gil;
             try {
               callback(share, left);
