@@ -313,45 +313,39 @@ def moebius(mesh, rng):
     return Mesh(vertices, faces, np.zeros(len(faces))), "a Moebius strip of %d faces" % len(faces)
 
 
-# (role, case): (spoiler, outcome, repair key or refusal message, exit code, formats allowed)
-CASES = {
-    ("swatch", "winding-mixed"): (winding_mixed, "repaired", "rewound_faces", 0, FORMATS),
-    ("swatch", "inward"): (inward, "repaired", "rewound_faces", 0, FORMATS),
-    ("swatch", "tubes-in-caps-out"): (None, "repaired", "rewound_faces", 0, FORMATS),
-    ("swatch", "soup"): (soup, "repaired", "welded_vertices", 0, ["obj", "ply", "off"]),
-    ("swatch", "duplicate-faces"): (duplicate_faces, "repaired", "duplicate_faces", 0, FORMATS),
-    ("swatch", "t-junctions"): (t_junctions, "repaired", "t_junctions", 0, ["obj", "ply", "off"]),
-    ("swatch", "zero-area-faces"): (lambda m, r: t_junctions(m, r, True), "repaired", "zero_area_faces", 0,
-                                    ["obj", "ply", "off"]),
-    ("swatch", "unused-far-vertices"): (unused_far_vertices, "repaired", "unused_vertices", 0, ["obj", "ply", "off"]),
-    ("swatch", "y-up"): (y_up, "accepted", None, 0, FORMATS),
-    ("swatch", "huge"): (lambda m, r: scaled(m, r, 3.0, 5.0), "accepted", None, 0, ["obj", "ply", "off"]),
-    ("swatch", "tiny"): (lambda m, r: scaled(m, r, -5.0, -3.0), "accepted", None, 0, ["obj", "ply", "off"]),
-    ("swatch", "non-manifold-edge"): (non_manifold_edge, "refused", "non-manifold edge", 5, FORMATS),
-    ("swatch", "stray-face"): (stray_face, "refused", "lies far from the rest", 5, FORMATS),
-    ("swatch", "nan"): (nan_vertex, "refused", "", 5, ["obj", "ply", "off"]),
-    ("swatch", "bad-index"): (bad_index, "refused", "", 5, ["obj", "ply", "off"]),
-    ("swatch", "no-faces"): (no_faces, "refused", "", 5, ["obj", "ply", "off"]),
-    ("base", "winding-mixed"): (winding_mixed, "repaired", "rewound_faces", 0, FORMATS),
-    ("base", "inward"): (inward, "repaired", "rewound_faces", 0, FORMATS),
-    ("base", "soup"): (soup, "repaired", "welded_vertices", 0, ["obj", "ply", "off"]),
-    ("base", "duplicate-faces"): (duplicate_faces, "repaired", "duplicate_faces", 0, FORMATS),
-    ("base", "t-junctions"): (t_junctions, "repaired", "t_junctions", 0, ["obj", "ply", "off"]),
-    ("base", "zero-area-faces"): (lambda m, r: t_junctions(m, r, True), "repaired", "zero_area_faces", 0,
-                                  ["obj", "ply", "off"]),
-    ("base", "unused-far-vertices"): (unused_far_vertices, "repaired", "unused_vertices", 0, ["obj", "ply", "off"]),
-    ("base", "y-up"): (y_up, "accepted", None, 0, FORMATS),
-    ("base", "millimetres"): (millimetres, "accepted", None, 0, FORMATS),
-    ("base", "far-offset"): (far_offset, "accepted", None, 0, ["obj", "ply", "off"]),
-    ("base", "tiny"): (lambda m, r: scaled(m, r, -5.0, -3.0), "accepted", None, 0, ["obj", "ply", "off"]),
-    ("base", "loose-parts"): (loose_parts, "quilted", None, 0, FORMATS),
-    ("base", "open-hole"): (open_hole, "quilted", None, 0, FORMATS),
-    ("base", "stray-face"): (stray_face, "refused", "lies", 5, FORMATS),
-    ("base", "non-manifold-edge"): (non_manifold_edge, "refused", "non-manifold edge", 5, FORMATS),
-    ("base", "moebius"): (moebius, "refused", "non-orientable", 5, FORMATS),
-    ("base", "nan"): (nan_vertex, "refused", "", 5, ["obj", "ply", "off"]),
-    ("base", "no-faces"): (no_faces, "refused", "", 5, ["obj", "ply", "off"]),
+TEXT = ["obj", "ply", "off"]  # formats that can hold shared or unused vertices
+# case: (spoiler, outcome, repair key or refusal message, exit code, formats allowed), for either role
+BOTH = {
+    "winding-mixed": (winding_mixed, "repaired", "rewound_faces", 0, FORMATS),
+    "inward": (inward, "repaired", "rewound_faces", 0, FORMATS),
+    "soup": (soup, "repaired", "welded_vertices", 0, TEXT),
+    "duplicate-faces": (duplicate_faces, "repaired", "duplicate_faces", 0, FORMATS),
+    "t-junctions": (t_junctions, "repaired", "t_junctions", 0, TEXT),
+    "zero-area-faces": (lambda m, r: t_junctions(m, r, True), "repaired", "zero_area_faces", 0, TEXT),
+    "unused-far-vertices": (unused_far_vertices, "repaired", "unused_vertices", 0, TEXT),
+    "y-up": (y_up, "accepted", None, 0, FORMATS),
+    "tiny": (lambda m, r: scaled(m, r, -5.0, -3.0), "accepted", None, 0, TEXT),
+    "non-manifold-edge": (non_manifold_edge, "refused", "non-manifold edge", 5, FORMATS),
+    "nan": (nan_vertex, "refused", "", 5, TEXT),
+    "no-faces": (no_faces, "refused", "", 5, TEXT),
 }
+SWATCH_ONLY = {
+    "tubes-in-caps-out": (None, "repaired", "rewound_faces", 0, FORMATS),
+    "huge": (lambda m, r: scaled(m, r, 3.0, 5.0), "accepted", None, 0, TEXT),
+    "stray-face": (stray_face, "refused", "lies far from the rest", 5, FORMATS),
+    "bad-index": (bad_index, "refused", "", 5, TEXT),
+}
+BASE_ONLY = {
+    "millimetres": (millimetres, "accepted", None, 0, FORMATS),
+    "far-offset": (far_offset, "accepted", None, 0, TEXT),
+    "loose-parts": (loose_parts, "quilted", None, 0, FORMATS),
+    "open-hole": (open_hole, "quilted", None, 0, FORMATS),
+    "stray-face": (stray_face, "refused", "lies", 5, FORMATS),
+    "moebius": (moebius, "refused", "non-orientable", 5, FORMATS),
+}
+# (role, case): its entry
+CASES = {**{("swatch", c): e for c, e in {**BOTH, **SWATCH_ONLY}.items()},
+         **{("base", c): e for c, e in {**BOTH, **BASE_ONLY}.items()}}
 
 
 # ---------------------------------------------------------------------------------------------

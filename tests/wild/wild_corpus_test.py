@@ -28,6 +28,8 @@ import time
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "foreign"))
+from foreign_corpus_test import find_numpy_python  # noqa: E402
 TIMEOUT = 300
 # Equally valid outputs differ: on a plane by the ties a repair reorders; over a base by where the
 # layout's cones fall, which moves with the last bits of the coordinates and sets the rings' size
@@ -36,16 +38,6 @@ TIMEOUT = 300
 ELEMENTS_SHARE = {"swatch": 0.03, "base": 0.2}
 COVERAGE_DROP = 0.01
 YARN_SHARE = 0.15
-
-
-def find_numpy_python():
-    for candidate in [sys.executable, "/usr/bin/python3", "python3"]:
-        try:
-            if subprocess.run([candidate, "-c", "import numpy"], capture_output=True).returncode == 0:
-                return candidate
-        except OSError:
-            continue
-    return None
 
 
 class Run:
