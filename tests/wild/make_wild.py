@@ -66,13 +66,18 @@ def clean_swatch(seed):
         elements = foreign.woven(p, rng)
         if foreign.clear_of_each_other(elements, foreign.CLEARANCE * radius):
             break
+    return joined(elements), p
+
+
+def joined(elements):
+    """One Mesh of swept elements, each face's part its element's index."""
     vertices, faces, parts, offset = [], [], [], 0
     for k, e in enumerate(elements):
         vertices.append(e.vertices)
         faces.append(e.faces + offset)
         parts.append(np.full(len(e.faces), k))
         offset += len(e.vertices)
-    return Mesh(np.concatenate(vertices), np.concatenate(faces), np.concatenate(parts)), p
+    return Mesh(np.concatenate(vertices), np.concatenate(faces), np.concatenate(parts))
 
 
 def icosphere(level):
@@ -468,13 +473,7 @@ def write_issue_wires(out_dir):
     names = []
     for which in (1, 2):
         elements, sides = issue_wire(which)
-        vertices, faces, parts, offset = [], [], [], 0
-        for k, e in enumerate(elements):
-            vertices.append(e.vertices)
-            faces.append(e.faces + offset)
-            parts.append(np.full(len(e.faces), k))
-            offset += len(e.vertices)
-        clean = Mesh(np.concatenate(vertices), np.concatenate(faces), np.concatenate(parts))
+        clean = joined(elements)
         wild, note = tubes_in_caps_out(clean.copy(), None, sides)
         rng = np.random.default_rng(which)
         write_off(out_dir / ("wire_%d_consistent.off" % which), clean, rng)
