@@ -138,7 +138,7 @@ void run_synth(const SynthArgs& args) {
   if (!args.swatch.empty()) request.swatch = read_mesh(args.swatch);
   if (curved) request.base = read_mesh(args.base);
   const SynthInputs inputs = prepare_synth_inputs(request);
-  const std::string swatch_name = args.swatch.empty() ? "built-in chain mail" : args.swatch;
+  const std::string swatch_name = synth_swatch_name(request);
   say_repairs(swatch_name, inputs.swatch_repairs, "elements");
   if (curved) {
     say_repairs(args.base, inputs.base_repairs, "parts");

@@ -504,9 +504,8 @@ class MESHQUILT_OT_update(JobOperator, bpy.types.Operator):
         old = self._result.data
         self._result.data = made.data
         self._result.data.name = old.name
-        for key in ("meshquilt_texture_file",):
-            if key in made:
-                self._result[key] = made[key]
+        if "meshquilt_texture_file" in made:
+            self._result["meshquilt_texture_file"] = made["meshquilt_texture_file"]
         bpy.data.objects.remove(made)
         if old.users == 0:
             bpy.data.meshes.remove(old)

@@ -18,12 +18,6 @@
 namespace meshquilt {
 namespace {
 
-const char* kBuiltInSwatch = "built-in chain mail";
-
-std::string swatch_name(const SynthRequest& request) {
-  return request.swatch_name.empty() ? kBuiltInSwatch : request.swatch_name;
-}
-
 // What either driver reports.
 nlohmann::json quilt_stats(const QuiltStats& stats) {
   return {
@@ -94,6 +88,10 @@ nlohmann::json repairs_json(const MeshRepairs& repairs) {
 
 }  // namespace
 
+std::string synth_swatch_name(const SynthRequest& request) {
+  return request.swatch_name.empty() ? "built-in chain mail" : request.swatch_name;
+}
+
 void check_synth_request(const SynthRequest& r) {
   auto fail = [](const std::string& text) { throw InputError(text, ErrorKind::invalid_option); };
   const bool curved = r.base.has_value();
@@ -122,7 +120,7 @@ double estimate_synth_bytes(const TriMesh& swatch, double width, double height) 
 SynthInputs prepare_synth_inputs(const SynthRequest& request) {
   SynthInputs inputs;
   // Oriented here as well as in the drivers, so a degenerate swatch is reported by its name.
-  inputs.swatch = orient_swatch(request.swatch ? *request.swatch : default_swatch(), swatch_name(request),
+  inputs.swatch = orient_swatch(request.swatch ? *request.swatch : default_swatch(), synth_swatch_name(request),
                                 &inputs.swatch_repairs);
   if (request.base) {
     inputs.base = prepare_base(*request.base, request.base_name, &inputs.base_repairs);
@@ -187,7 +185,7 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
   }
   // An empty file would pass for a result: say why there is none instead.
   if (outcome.mesh.num_faces() == 0)
-    throw InputError(swatch_name(request) + ": nothing was quilted: " +
+    throw InputError(synth_swatch_name(request) + ": nothing was quilted: " +
                          (request.base ? "no element fits " + request.base_name + " at {scale} " +
                                              std::to_string(request.scale) + " (try a smaller {scale})"
                                        : "every element was dropped (open, folded or intersecting; see swatch check)"),
@@ -196,7 +194,7 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
   nlohmann::json& stats = outcome.stats;
   int32_t elements = 0;
   for (int32_t e : outcome.mesh.elements) elements = std::max(elements, e + 1);
-  stats["swatch"] = swatch_name(request);
+  stats["swatch"] = synth_swatch_name(request);
   stats["repairs"]["swatch"] = repairs_json(inputs.swatch_repairs);
   if (request.base) stats["repairs"]["base"] = repairs_json(inputs.base_repairs);
   stats["faces"] = outcome.mesh.num_faces();

@@ -48,6 +48,9 @@ struct SynthRequest {
   std::filesystem::path grid_folder;   //!< cache of nearest-face grids; empty: none
 };
 
+//! The swatch's name in messages and stats: its file, or "built-in chain mail".
+std::string synth_swatch_name(const SynthRequest& request);
+
 //! Checks every value of `request` before any work.
 //! \throw InputError(invalid_option) naming the option as {name}: neither or both of plane and
 //!        base, plane sizes outside (0, 1000], scale outside (0, 10], symmetry not 0, 1, 2 or 4,
