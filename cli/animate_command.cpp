@@ -16,10 +16,10 @@
 #include "edit/element_edit.h"
 #include "edit/swatch_animation.h"
 #include "embed_frames.h"
+#include "jobs/animate_job.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
-#include "quilt/broken_elements.h"
 #include "shell/texture_file.h"
 #include "shell/texture_placement.h"
 #include "texture_files.h"
@@ -67,10 +67,8 @@ void run_animate(const AnimateArgs& args) {
         texture);
   } else {
     quilt = read_mesh(args.quilt);
-    if (quilt.origins.empty())
-      throw InputError(args.quilt + ": no vertex property `origin` (write it with synth --provenance)",
-                       ErrorKind::invalid_option);
-    if (quilt.elements.empty()) quilt.elements = face_components(quilt);
+    if (quilt.elements.empty() && !quilt.origins.empty()) quilt.elements = face_components(quilt);
+    check_animated_quilt(quilt, args.quilt);
   }
   const size_t count = std::max(swatch_frames.size(), base_frames ? base_frames->size() : size_t{0});
   std::vector<glm::dmat3> frames;
@@ -79,11 +77,7 @@ void run_animate(const AnimateArgs& args) {
   const auto frame_mesh = [&](size_t k) {
     const fs::path& swatch_path = swatch_frames[k % swatch_frames.size()];
     const TriMesh swatch = read_mesh(swatch_path);
-    if (swatch.num_vertices() != rest.num_vertices())
-      throw InputError(swatch_path.string() + ": " + std::to_string(swatch.num_vertices()) +
-                           " vertices, not the swatch's " + std::to_string(rest.num_vertices()) + " (" +
-                           rest_name + ")",
-                       ErrorKind::invalid_option);
+    check_swatch_frame(swatch.num_vertices(), rest.num_vertices(), swatch_path.string(), rest_name);
     const size_t base_k = base_frames ? std::min(k, base_frames->size() - 1) : 0;
     if (texture_in && placed_for != base_k) {
       quilt = place_texture(texture, base_frames->posed(base_k), args.embed, args.quilt).mesh;
@@ -99,24 +93,10 @@ void run_animate(const AnimateArgs& args) {
 
   // Elements that meet another, or themselves, in any frame are left out of every frame (the
   // clean-up pass of synthesis, over time), unless --keep-all.
-  std::vector<int32_t> ids(quilt.elements.begin(), quilt.elements.end());
-  if (texture_in) ids.assign(texture.elements.begin(), texture.elements.end());
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  std::vector<uint8_t> alive(ids.size(), 1);
-  int met = 0;
-  if (!args.keep_all) {
-    for (size_t k = 0; k < count; ++k) {
-      const TriMesh moved = frame_mesh(k);
-      const std::vector<TriMesh> parts = split_elements(moved);
-      std::vector<const TriMesh*> pointers;
-      for (const TriMesh& part : parts) pointers.push_back(&part);
-      met += remove_broken_elements(pointers, false, true, alive).intersecting_face_pairs;
-    }
-  }
-  std::vector<int32_t> dropped;
-  for (size_t i = 0; i < ids.size(); ++i)
-    if (!alive[i]) dropped.push_back(ids[i]);
+  const TriMesh first = frame_mesh(0);
+  const MeetingElements meeting =
+      meeting_elements(first, args.keep_all ? 0 : count, [&](size_t k) { return frame_mesh(k).positions; });
+  const std::vector<int32_t>& dropped = meeting.dropped;
 
   nlohmann::json per_frame = nlohmann::json::array();
   for (size_t k = 0; k < count; ++k) {
@@ -137,18 +117,16 @@ void run_animate(const AnimateArgs& args) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.stats.empty())
-    write_text_atomic(args.stats, nlohmann::json{{"quilt", args.quilt},
-                                                 {"frames", count},
-                                                 {"elements", ids.size()},
-                                                 {"dropped_meeting", dropped.size()},
-                                                 {"meeting_face_pairs", met},
-                                                 {"seconds", seconds},
-                                                 {"per_frame", per_frame}}
-                                          .dump(2) +
-                                      "\n");
+  {
+    nlohmann::json summary = {{"quilt", args.quilt}};
+    summary.update(animate_stats(count, meeting));
+    summary["seconds"] = seconds;
+    summary["per_frame"] = per_frame;
+    write_text_atomic(args.stats, summary.dump(2) + "\n");
+  }
   std::printf(
       "wrote %zu frames to %s in %.2f s; %zu of %zu elements left out for meeting another or themselves\n",
-      count, args.output.c_str(), seconds, dropped.size(), ids.size());
+      count, args.output.c_str(), seconds, dropped.size(), meeting.ids.size());
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "edit/element_edit.h"
+#include "jobs/edit_job.h"
 #include "edit/texture_edit.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
@@ -69,19 +70,8 @@ EditRequest request_of(const EditArgs& args) {
   request.remove_elements = parse_ids(args.remove_elements, "--remove-elements");
   request.remove_sources = parse_ids(args.remove_sources, "--remove-source");
   request.keep_sources = parse_ids(args.keep_sources, "--keep-source");
-  if (!args.box.empty()) {
-    EditRegion box;
-    box.lo = Vec3(args.box[0], args.box[1], args.box[2]);
-    box.hi = Vec3(args.box[3], args.box[4], args.box[5]);
-    request.remove_inside.push_back(box);
-  }
-  if (!args.sphere.empty()) {
-    EditRegion sphere;
-    sphere.kind = EditRegion::Kind::sphere;
-    sphere.centre = Vec3(args.sphere[0], args.sphere[1], args.sphere[2]);
-    sphere.radius = args.sphere[3];
-    request.remove_inside.push_back(sphere);
-  }
+  if (!args.box.empty()) request.remove_inside.push_back(box_region(args.box));
+  if (!args.sphere.empty()) request.remove_inside.push_back(sphere_region(args.sphere));
   request.age = args.age;
   request.seed = args.seed;
   return request;
@@ -92,9 +82,7 @@ void run_edit(const EditArgs& args) {
   const bool texture_in = is_texture_file(args.input);
   const bool texture_out = is_texture_file(args.output);
   const bool recolour = !args.color_by.empty() || !args.palette.empty();
-  if (!args.color_by.empty() && args.color_by != "element" && args.color_by != "source")
-    throw InputError("--color-by: expected element or source, got '" + args.color_by + "'",
-                     ErrorKind::invalid_option);
+  const ColorBy color_by = args.color_by.empty() ? ColorBy::element : parse_color_by(args.color_by);
   const auto palette =
       args.palette.empty() ? std::vector<std::array<uint8_t, 3>>{} : parse_palette(args.palette);
   if (texture_out && !texture_in)
@@ -132,31 +120,19 @@ void run_edit(const EditArgs& args) {
     mesh = read_mesh(args.input);
     if (mesh.elements.empty()) mesh.elements = face_element_ids(mesh);
   }
-  EditCounts counts;
-  const std::vector<int32_t> removed =
-      elements_to_remove({mesh.elements, mesh.sources, mesh.positions, mesh.triangles}, request, counts);
-  const std::vector<uint8_t> keep = faces_kept(mesh.elements, removed);
+  const EditOutcome edit = plan_edit(mesh, request, args.input);
+  const EditCounts& counts = edit.counts;
   if (texture_out) {
-    write_texture_file(args.output, keep_texture_faces(texture, keep));
+    write_texture_file(args.output, keep_texture_faces(texture, edit.keep));
   } else {
-    TriMesh out = keep_faces(mesh, keep);
-    if (recolour)
-      out.colors =
-          vertex_colors(out, args.color_by == "source" ? ColorBy::source : ColorBy::element, palette);
+    TriMesh out = keep_faces(mesh, edit.keep);
+    if (recolour) out.colors = vertex_colors(out, color_by, palette);
     write_mesh(out, args.output);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const nlohmann::json summary = {{"input", args.input},
-                                  {"output", args.output},
-                                  {"elements", counts.elements},
-                                  {"kept", counts.kept},
-                                  {"removed", counts.elements - counts.kept},
-                                  {"removed_by_id", counts.by_id},
-                                  {"removed_by_source", counts.by_source},
-                                  {"removed_by_keep_source", counts.by_keep_source},
-                                  {"removed_inside", counts.inside},
-                                  {"removed_aged", counts.aged},
-                                  {"seconds", seconds}};
+  nlohmann::json summary = {{"input", args.input}, {"output", args.output}};
+  summary.update(edit_stats(counts));
+  summary["seconds"] = seconds;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %d of %d elements kept (%d removed)\n", args.output.c_str(), counts.kept,
               counts.elements, counts.elements - counts.kept);

@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "embed_frames.h"
+#include "jobs/embed_job.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "shell/texture_file.h"
@@ -47,21 +48,14 @@ void run_embed(const EmbedArgs& args) {
   MeshRepairs repairs;
   const TriMesh base = prepare_base(read_mesh(args.base), args.base, &repairs);
   say_repairs(args.base, repairs, "parts");
-  check_texture_base(texture, base, args.base);
-  PlacedTexture placed = place_texture(texture, base, args.embed, args.texture);
+  PlacedTexture placed = run_embed(texture, base, args.embed, args.texture, args.base);
   if (!args.provenance) placed.mesh.origins.clear();
   const TriMesh& out = placed.mesh;
   write_mesh(out, args.output);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json summary = {{"texture", args.texture},
-                            {"base", args.base},
-                            {"output", args.output},
-                            {"faces", out.num_faces()},
-                            {"vertices", out.num_vertices()},
-                            {"embed", placed.shell_map ? "shell" : "normal"},
-                            {"shell_reduced_vertices", placed.shell_reduced_vertices},
-                            {"synthesis_map_elements", placed.synthesis_map_elements},
-                            {"seconds", seconds}};
+  nlohmann::json summary = {{"texture", args.texture}, {"base", args.base}, {"output", args.output}};
+  summary.update(embed_stats(placed));
+  summary["seconds"] = seconds;
   if (!args.stats.empty()) write_text_atomic(args.stats, summary.dump(2) + "\n");
   std::printf("wrote %s: %zu faces in %.2f s\n", args.output.c_str(), out.num_faces(), seconds);
 }

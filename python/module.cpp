@@ -20,6 +20,9 @@
 #include "edit/swatch_animation.h"
 #include "inspect/inspect_report.h"
 #include "core/atomic_write.h"
+#include "jobs/animate_job.h"
+#include "jobs/edit_job.h"
+#include "jobs/embed_job.h"
 #include "jobs/image_jobs.h"
 #include "jobs/synth_job.h"
 #include "mesh/base_mesh.h"
@@ -30,7 +33,6 @@
 #include "paint/detail_extraction.h"
 #include "paint/surface_paint.h"
 #include "paint/surface_relief.h"
-#include "quilt/broken_elements.h"
 #include "quilt/planar_quilting.h"
 #include "render/png_encoding.h"
 #include "render/render_mesh.h"
@@ -516,15 +518,20 @@ PYBIND11_MODULE(_meshquilt, m) {
       "embed",
       [](const py::bytes& texture_bytes, const Array3d& base_vertices, const Array3i& base_faces,
          const std::string& embed) {
+        const auto start = std::chrono::steady_clock::now();
         const QuiltTexture texture = parse_texture(std::string(texture_bytes), "texture");
         const TriMesh base = prepare_base(mesh_from(base_vertices, base_faces, "base"), "base");
-        check_texture_base(texture, base, "base");
-        TriMesh placed;
+        PlacedTexture placed;
         {
           py::gil_scoped_release release;
-          placed = place_texture(texture, base, embed, "texture").mesh;
+          placed = run_embed(texture, base, embed, "texture", "base");
         }
-        return dict_of(placed);
+        nlohmann::json stats = {{"texture", nullptr}, {"base", nullptr}, {"output", nullptr}};
+        stats.update(embed_stats(placed));
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        py::dict out = dict_of(placed.mesh);
+        out["stats"] = json_to_python(stats);
+        return out;
       },
       py::arg("texture"), py::arg("base_vertices"), py::arg("base_faces"), py::arg("embed") = "auto");
 
@@ -596,29 +603,40 @@ PYBIND11_MODULE(_meshquilt, m) {
       "edit",
       [](const Array3d& vertices, const Array3i& faces, const py::array_t<int32_t>& element,
          std::optional<py::array_t<int32_t>> source, std::vector<int32_t> remove_elements,
-         std::vector<int32_t> remove_sources, std::vector<int32_t> keep_sources, double age, uint64_t seed) {
+         std::vector<int32_t> remove_sources, std::vector<int32_t> keep_sources,
+         std::optional<std::vector<double>> remove_box, std::optional<std::vector<double>> remove_sphere, double age,
+         uint64_t seed, const std::string& color_by, const std::string& palette) {
+        const auto start = std::chrono::steady_clock::now();
         TriMesh mesh = mesh_from(vertices, faces, "edit");
         mesh.elements.assign(element.data(), element.data() + element.size());
         if (source) mesh.sources.assign(source->data(), source->data() + source->size());
-        if (mesh.elements.size() != mesh.num_faces() ||
-            (!mesh.sources.empty() && mesh.sources.size() != mesh.num_faces()))
-          throw InputError("edit: element and source need one entry per face", ErrorKind::invalid_option);
         EditRequest request;
         request.remove_elements = std::move(remove_elements);
         request.remove_sources = std::move(remove_sources);
         request.keep_sources = std::move(keep_sources);
+        if (remove_box) request.remove_inside.push_back(box_region(*remove_box));
+        if (remove_sphere) request.remove_inside.push_back(sphere_region(*remove_sphere));
         request.age = age;
         request.seed = seed;
-        EditCounts counts;
-        const std::vector<int32_t> removed = elements_to_remove(
-            {mesh.elements, mesh.sources, mesh.positions, mesh.triangles}, request, counts);
-        py::dict out = dict_of(keep_faces(mesh, faces_kept(mesh.elements, removed)));
-        out["removed"] = removed;
+        const bool recolour = !color_by.empty() || !palette.empty();
+        const ColorBy by = color_by.empty() ? ColorBy::element : parse_color_by(color_by);
+        const auto colours = palette.empty() ? std::vector<std::array<uint8_t, 3>>{} : parse_palette(palette);
+        const EditOutcome edit = plan_edit(mesh, request, "edit");
+        TriMesh kept = keep_faces(mesh, edit.keep);
+        if (recolour) kept.colors = vertex_colors(kept, by, colours);
+        nlohmann::json stats = {{"input", nullptr}, {"output", nullptr}};
+        stats.update(edit_stats(edit.counts));
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        py::dict out = dict_of(kept);
+        out["removed"] = edit.removed;
+        out["stats"] = json_to_python(stats);
         return out;
       },
       py::arg("vertices"), py::arg("faces"), py::arg("element"), py::arg("source") = py::none(),
       py::arg("remove_elements") = std::vector<int32_t>{}, py::arg("remove_sources") = std::vector<int32_t>{},
-      py::arg("keep_sources") = std::vector<int32_t>{}, py::arg("age") = 0.0, py::arg("seed") = 1);
+      py::arg("keep_sources") = std::vector<int32_t>{}, py::arg("remove_box") = py::none(),
+      py::arg("remove_sphere") = py::none(), py::arg("age") = 0.0, py::arg("seed") = 1, py::arg("color_by") = "",
+      py::arg("palette") = "");
 
   m.def("swatch_kinds", [] {
     py::list kinds;
@@ -655,49 +673,37 @@ PYBIND11_MODULE(_meshquilt, m) {
       [](const Array3d& vertices, const Array3i& faces, const py::array_t<int32_t>& element,
          const py::array_t<int32_t>& origin, const Array3d& swatch_rest, const std::vector<Array3d>& swatch_frames,
          bool keep_all) {
+        const auto start = std::chrono::steady_clock::now();
         TriMesh quilt = mesh_from(vertices, faces, "animate");
         quilt.elements.assign(element.data(), element.data() + element.size());
         quilt.origins.assign(origin.data(), origin.data() + origin.size());
-        if (quilt.elements.size() != quilt.num_faces() || quilt.origins.size() != quilt.num_vertices())
-          throw InputError("animate: element needs one entry per face and origin one per vertex",
-                           ErrorKind::invalid_option);
+        check_animated_quilt(quilt, "animate");
         const std::vector<Vec3> rest = positions_of(swatch_rest, "swatch_rest");
         std::vector<std::vector<Vec3>> frames;
         for (const Array3d& frame : swatch_frames) {
           frames.push_back(positions_of(frame, "a swatch frame"));
-          if (frames.back().size() != rest.size())
-            throw InputError("animate: a swatch frame has " + std::to_string(frames.back().size()) +
-                                 " vertices, the swatch " + std::to_string(rest.size()),
-                             ErrorKind::invalid_option);
+          check_swatch_frame(frames.back().size(), rest.size(), "animate: swatch frame " +
+                             std::to_string(frames.size() - 1), "swatch_rest");
         }
         std::vector<std::vector<Vec3>> moved;
-        std::vector<int32_t> dropped;
+        MeetingElements meeting;
         {
           py::gil_scoped_release release;
           const std::vector<glm::dmat3> local = vertex_frames(quilt, rest);
           for (const std::vector<Vec3>& frame : frames) moved.push_back(animated_positions(quilt, local, rest, frame));
-          // As `meshquilt animate`: elements that meet another or themselves in some frame go.
-          std::vector<int32_t> ids(quilt.elements.begin(), quilt.elements.end());
-          std::sort(ids.begin(), ids.end());
-          ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-          std::vector<uint8_t> alive(ids.size(), 1);
-          if (!keep_all)
-            for (const std::vector<Vec3>& positions : moved) {
-              TriMesh at = quilt;
-              at.positions = positions;
-              const std::vector<TriMesh> parts = split_elements(at);
-              std::vector<const TriMesh*> pointers;
-              for (const TriMesh& part : parts) pointers.push_back(&part);
-              remove_broken_elements(pointers, false, true, alive);
-            }
-          for (size_t i = 0; i < ids.size(); ++i)
-            if (!alive[i]) dropped.push_back(ids[i]);
+          meeting = meeting_elements(quilt, keep_all ? 0 : moved.size(), [&](size_t k) { return moved[k]; });
         }
+        nlohmann::json stats = {{"quilt", nullptr}};
+        stats.update(animate_stats(moved.size(), meeting));
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats["per_frame"] = nlohmann::json::array();
+        const std::vector<int32_t>& dropped = meeting.dropped;
         py::list positions;
         for (const std::vector<Vec3>& frame : moved) positions.append(positions_array(frame));
         py::dict out;
         out["frames"] = positions;
         out["dropped"] = dropped;
+        out["stats"] = json_to_python(stats);
         return out;
       },
       py::arg("vertices"), py::arg("faces"), py::arg("element"), py::arg("origin"), py::arg("swatch_rest"),

@@ -19,7 +19,7 @@ import numpy as np
 from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
-__all__ = ["Mesh", "Result", "CancelToken", "Cancelled", "Error", "swatch", "swatch_kinds", "synth", "guidance", "paint", "relief",
+__all__ = ["Mesh", "Result", "Animation", "CancelToken", "Cancelled", "Error", "swatch", "swatch_kinds", "synth", "guidance", "paint", "relief",
            "vine_frames",
            "animate",
            "inspect", "render", "edit", "read", "write", "embed"]
@@ -188,13 +188,27 @@ def vine_frames(count: int, preset: str = "default", seed: int = 1, **options: A
     return list(_meshquilt.vine_frames(count, preset, seed, **options))
 
 
+@dataclass
+class Animation:
+    """A swatch animation played on a result: positions per frame, (V, 3) arrays; the element ids
+    left out for meeting another or themselves in some frame; and the figures `meshquilt animate
+    --stats` writes. Unpacks as (frames, dropped)."""
+
+    frames: List[np.ndarray]
+    dropped: np.ndarray
+    stats: Dict[str, Any] = field(default_factory=dict)
+
+    def __iter__(self):
+        return iter((self.frames, self.dropped))
+
+
 def animate(result: Mesh, swatch_rest: Any, swatch_frames: Sequence[Any],
-            keep_all: bool = False) -> Tuple[List[np.ndarray], np.ndarray]:
+            keep_all: bool = False) -> Animation:
     """Plays a swatch animation on a result, as `meshquilt animate` does: each vertex moves by its
     swatch vertex's displacement (from `swatch_rest`, the swatch as synth used it, to each frame)
     turned into its own local frame. `result` needs `element` and `origin` (every synth result
-    has them). Returns (positions per frame, (V, 3) arrays; the element ids that meet another or
-    themselves in some frame, left out by the command; none with keep_all)."""
+    has them). Returns an Animation: positions per frame, the element ids that meet another or
+    themselves in some frame (left out by the command; none with keep_all), and its stats."""
     if result.element is None or result.origin is None:
         raise TypeError("animate: the result needs per-face element ids and per-vertex origins")
     vertices, faces = _arrays(result, "animate")
@@ -202,7 +216,7 @@ def animate(result: Mesh, swatch_rest: Any, swatch_frames: Sequence[Any],
     frames = [np.ascontiguousarray(f, dtype=np.float64).reshape(-1, 3) for f in swatch_frames]
     d = _meshquilt.animate(vertices, faces, np.ascontiguousarray(result.element, np.int32),
                            np.ascontiguousarray(result.origin, np.int32), rest, frames, keep_all)
-    return list(d["frames"]), np.asarray(d["dropped"], dtype=np.int32)
+    return Animation(list(d["frames"]), np.asarray(d["dropped"], dtype=np.int32), d["stats"])
 
 
 def inspect(mesh: MeshLike) -> Dict[str, Any]:
@@ -224,16 +238,23 @@ def render(mesh: MeshLike, path: str, width: int = 1024, height: int = 768, mode
 
 
 def edit(mesh: Mesh, *, remove_elements: Sequence[int] = (), remove_sources: Sequence[int] = (),
-         keep_sources: Sequence[int] = (), age: float = 0.0, seed: int = 1) -> Mesh:
-    """Removes elements as `meshquilt edit` does (by id, by source, keeping some sources, or a share
-    at random with `age`); every other element stays exactly as it was."""
+         keep_sources: Sequence[int] = (), remove_box: Optional[Sequence[float]] = None,
+         remove_sphere: Optional[Sequence[float]] = None, age: float = 0.0, seed: int = 1,
+         color_by: str = "", palette: str = "") -> Result:
+    """Removes elements as `meshquilt edit` does (by id, by source, keeping some sources, inside a
+    box (x0, y0, z0, x1, y1, z1) or a sphere (x, y, z, r), or a share at random with `age`); every
+    other element stays exactly as it was. `color_by` ("element" or "source") and `palette`
+    ("RRGGBB,...") recolour what is kept. The result's `stats` are `edit --stats`'s."""
     if mesh.element is None:
         raise TypeError("edit: the mesh needs per-face element ids")
     vertices, faces = _arrays(mesh, "edit")
     source = None if mesh.source is None else np.ascontiguousarray(mesh.source, np.int32)
     d = _meshquilt.edit(vertices, faces, np.ascontiguousarray(mesh.element, np.int32), source, list(remove_elements),
-                        list(remove_sources), list(keep_sources), age, seed)
-    return _mesh(d)
+                        list(remove_sources), list(keep_sources),
+                        None if remove_box is None else [float(v) for v in remove_box],
+                        None if remove_sphere is None else [float(v) for v in remove_sphere], age, seed, color_by,
+                        palette)
+    return _mesh(d, Result, stats=d["stats"])
 
 
 def read(path: str) -> Mesh:
@@ -254,9 +275,11 @@ def write(mesh: MeshLike, path: str) -> None:
                      None if source is None else np.ascontiguousarray(source, np.int32), path, _colors(mesh))
 
 
-def embed(texture: bytes, base: MeshLike, mode: str = "auto") -> Mesh:
+def embed(texture: bytes, base: MeshLike, mode: str = "auto") -> Result:
     """Places a layer kept by `synth(..., keep_texture=True)` (or read from a `.mqt` file) over a
     base with the same vertices and faces, moved (a pose, a sculpt), as `meshquilt embed` does:
-    over the base it was made on it gives synth's result back exactly."""
+    over the base it was made on it gives synth's result back exactly. The result's `stats` are
+    `embed --stats`'s."""
     vertices, faces = _arrays(base, "base")
-    return _mesh(_meshquilt.embed(bytes(texture), vertices, faces, mode))
+    d = _meshquilt.embed(bytes(texture), vertices, faces, mode)
+    return _mesh(d, Result, stats=d["stats"])

@@ -333,16 +333,23 @@ def test_animate_equals_the_command_line_frame_for_frame():
         subprocess.run([CLI, "synth", "--progress", "none", "--backend", "cpu", "--swatch",
                         os.path.join(folder, "vine.ply"), "--plane", "1x1", "--seed", "1", "--provenance", "-o", quilt],
                        check=True, capture_output=True)
+        stats = os.path.join(folder, "animate.json")
         subprocess.run([CLI, "animate", "--quilt", quilt, "--swatch-frames", os.path.join(folder, "vine_frames"),
-                        "--swatch", os.path.join(folder, "vine.ply"), "-o", os.path.join(folder, "out")],
-                       check=True, capture_output=True)
+                        "--swatch", os.path.join(folder, "vine.ply"), "-o", os.path.join(folder, "out"),
+                        "--stats", stats], check=True, capture_output=True)
+        animation = meshquilt.animate(result, vine.vertices, frames)
+        with open(stats) as f:
+            cli_stats = json.load(f)
+        assert set(animation.stats) == set(cli_stats)
+        for key in ("frames", "elements", "dropped_meeting", "meeting_face_pairs"):
+            assert animation.stats[key] == cli_stats[key], key
         for k in range(3):
             names, rows = read_ply(os.path.join(folder, "out", "frame_%04d.ply" % k))["vertex"]
             assert np.array_equal(np.array([r[:3] for r in rows]), positions[k][used])
     # A still swatch moves nothing.
     still, _ = meshquilt.animate(result, vine.vertices, [vine.vertices], keep_all=True)
     assert np.array_equal(still[0], result.vertices)
-    with pytest.raises(meshquilt.Error, match="a swatch frame has 3 vertices"):
+    with pytest.raises(meshquilt.Error, match="swatch frame 0: 3 vertices, not the swatch.s 200"):
         meshquilt.animate(result, vine.vertices, [vine.vertices[:3]])
 
 
@@ -469,6 +476,33 @@ def test_edit_ages_and_keeps_the_rest():
     assert report["closed_elements"] == len(after)
 
 
+def test_edit_equals_the_command_line_with_its_stats(tmp_path):
+    result = meshquilt.synth(plane=(2, 2), backend="cpu")
+    path, out, stats = str(tmp_path / "r.ply"), str(tmp_path / "e.ply"), str(tmp_path / "e.json")
+    meshquilt.write(result, path)
+    lo, hi = result.vertices.min(axis=0), result.vertices.max(axis=0)
+    box = list(lo) + list(lo + 0.3 * (hi - lo))
+    sphere = list(hi) + [0.25 * float(np.linalg.norm(hi - lo))]
+    subprocess.run([CLI, "edit", path, "-o", out, "--age", "0.05", "--seed", "4", "--remove-elements", "0-2",
+                    "--remove-box", *map(repr, box), "--remove-sphere", *map(repr, sphere), "--color-by", "source",
+                    "--stats", stats], check=True, capture_output=True)
+    kept = meshquilt.edit(result, remove_elements=[0, 1, 2], remove_box=box, remove_sphere=sphere, age=0.05, seed=4,
+                          color_by="source")
+    with open(stats) as f:
+        cli_stats = json.load(f)
+    assert set(kept.stats) == set(cli_stats)
+    for key in cli_stats:
+        if key not in ("input", "output", "seconds"):
+            assert kept.stats[key] == cli_stats[key], key
+    assert cli_stats["removed_inside"] > 0 and cli_stats["removed_by_id"] == 3 and cli_stats["removed_aged"] > 0
+    back = meshquilt.read(out)
+    assert np.array_equal(back.vertices, kept.vertices) and np.array_equal(back.colors, kept.colors)
+    with pytest.raises(meshquilt.Error, match="--remove-box: expected X0 Y0 Z0 X1 Y1 Z1, got 2 numbers"):
+        meshquilt.edit(result, remove_box=[0, 1])
+    with pytest.raises(meshquilt.Error, match="--color-by: expected element or source"):
+        meshquilt.edit(result, color_by="face")
+
+
 def test_write_then_read_gives_the_result_back(tmp_path):
     result = meshquilt.synth(plane=(1.5, 1.5), backend="cpu")
     meshquilt.write(result, str(tmp_path / "r.ply"))
@@ -491,6 +525,17 @@ def test_embed_gives_the_result_back_and_follows_a_moved_base():
                              keep_texture=True)
     same = meshquilt.embed(result.texture, base)
     assert np.array_equal(same.vertices, result.vertices) and np.array_equal(same.faces, result.faces)
+    with tempfile.TemporaryDirectory() as folder:
+        texture, stats = os.path.join(folder, "t.mqt"), os.path.join(folder, "e.json")
+        with open(texture, "wb") as f:
+            f.write(result.texture)
+        subprocess.run([CLI, "embed", "--texture", texture, "--base", os.path.join(SOURCE, "data", "sphere.off"),
+                        "-o", os.path.join(folder, "e.ply"), "--stats", stats], check=True, capture_output=True)
+        with open(stats) as f:
+            cli_stats = json.load(f)
+    assert set(same.stats) == set(cli_stats)
+    for key in ("faces", "vertices", "embed", "shell_reduced_vertices", "synthesis_map_elements"):
+        assert same.stats[key] == cli_stats[key], key
     stretched = meshquilt.embed(result.texture, (base[0] * np.array([1.5, 1.0, 1.0]), base[1]))
     assert np.array_equal(stretched.faces, result.faces)
     assert stretched.vertices[:, 0].max() > 1.3 * result.vertices[:, 0].max()
