@@ -11,8 +11,12 @@ subcommand (found in the "Subcommands:" section of CLI11's help) is missing from
 when a command is missing from docs/cli.md's list of commands (its first paragraph) or a swatch
 kind its section; when a key
 of the stats JSON that `synth --stats` writes over a plane and over data/sphere.off (top-level
-keys, stage names, repair counts) is missing from docs/cli.md; or when a string literal in
-host/ names a command-line flag (library messages say {name}; the front ends spell it).
+keys, stage names, repair counts) is missing from docs/cli.md; when a string literal in
+host/ names a command-line flag (library messages say {name}; the front ends spell it); when
+docs/performance.md or the README's figures differ from what docs/figures.json gives
+(`perf/figures.py write --check`); or when another page quotes a timing (a decimal number of
+seconds or milliseconds) outside the README's generated blocks: timings live in
+docs/performance.md alone.
 An option or key counts as documented when it appears inside backticks (a code span or a fenced
 block) in docs/cli.md. On success prints "docs check: N options documented, K stats keys,
 README L lines". Python 3 standard library only.
@@ -192,6 +196,32 @@ def check_sources_and_stats(binary, root, top_commands, swatch_kinds=()):
     return problems, len(keys)
 
 
+# A measured timing: "1.5 s", "0.19 s", "39 ms", "2.5 seconds". Whole seconds ("10 s") are
+# limits and settings, not measurements.
+TIMING = re.compile(r"\b\d+\.\d+ ?(?:s|seconds|minutes)\b|\b\d+(?:\.\d+)? ?ms\b")
+GENERATED = re.compile(r"<!-- figures:([a-z-]+) -->.*?<!-- /figures:\1 -->", re.S)
+
+
+def quoted_timings(name, text):
+    """Timings quoted outside generated blocks, one problem per line."""
+    text = GENERATED.sub(lambda m: "\n" * m.group(0).count("\n"), text)
+    return ["%s:%d: quotes a timing (%s); timings live in docs/performance.md" % (name, n, m.group(0))
+            for n, line in enumerate(text.splitlines(), 1) for m in [TIMING.search(line)] if m]
+
+
+def check_figures(root):
+    problems = []
+    pages = [root / "README.md", root / "CONTRIBUTING.md"] + sorted((root / "docs").glob("*.md"))
+    for page in pages:
+        if page.name != "performance.md" and page.exists():
+            problems += quoted_timings(str(page.relative_to(root)), page.read_text(encoding="utf-8"))
+    done = subprocess.run([sys.executable, str(root / "perf" / "figures.py"), "write", "--check"],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        problems.append((done.stderr or done.stdout).strip())
+    return problems
+
+
 def binary_help(binary):
     def help_of(path):
         command = [binary] + path + ["--help"]
@@ -337,6 +367,9 @@ def self_test():
 
     expect("flag literals", [line.split(":")[1] for line in flag_literals("x.cpp", SAMPLE_SOURCE)], ["2", "5"])
     expect("code words", sorted(code_words("`a_b` and ```\nc {d}\n``` but not e")), ["a_b", "c", "d"])
+    expect("timings", [p.split(":")[1] for p in quoted_timings(
+        "x.md", "in 1.5 s\nfuzz 10 s\n<!-- figures:a -->\n2.5 s\n<!-- /figures:a -->\n39 ms and 0.2 seconds")],
+        ["1", "6"])
 
     if failures:
         for failure in failures:
@@ -357,6 +390,7 @@ def main(argv):
     more, keys = check_sources_and_stats(argv[1], Path(argv[2]), parse_help(help_of([]))[1],
                                          parse_help(help_of(["swatch"]))[1])
     problems += more
+    problems += check_figures(Path(argv[2]))
     if problems:
         for problem in problems:
             print(problem)

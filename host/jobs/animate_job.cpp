@@ -10,7 +10,7 @@ namespace meshquilt {
 
 void check_animated_quilt(const TriMesh& quilt, const std::string& name) {
   if (quilt.origins.empty())
-    throw InputError(name + ": no vertex property `origin` (write it with synth --provenance)",
+    throw InputError(name + ": no vertex property `origin` (write it with synth {provenance})",
                      ErrorKind::invalid_option);
   if (quilt.elements.size() != quilt.num_faces() || quilt.origins.size() != quilt.num_vertices())
     throw InputError(name + ": element needs one entry per face and origin one per vertex",
