@@ -63,9 +63,17 @@ double regular_pitch(const std::vector<double>& centres, const std::string& name
 
 }  // namespace
 
+Vec3 registered_point(const ExemplarWeave& weave, const Vec3& q) {
+  const double cs = std::cos(weave.tilt), sn = std::sin(weave.tilt);
+  return Vec3(cs * q.x + sn * q.y, -sn * q.x + cs * q.y, q.z);
+}
+
+std::vector<int32_t> yarn_face_elements(const TriMesh& mesh) {
+  return mesh.elements.size() == mesh.num_faces() ? mesh.elements : face_components(mesh);
+}
+
 ExemplarWeave register_exemplar(const TriMesh& mesh, const std::string& name) {
-  const std::vector<int32_t> face_elements =
-      mesh.elements.size() == mesh.num_faces() ? mesh.elements : face_components(mesh);
+  const std::vector<int32_t> face_elements = yarn_face_elements(mesh);
   int32_t count = 0;
   for (int32_t e : face_elements) count = std::max(count, e + 1);
   std::vector<std::vector<int32_t>> vertices_of(static_cast<size_t>(count));
@@ -86,12 +94,8 @@ ExemplarWeave register_exemplar(const TriMesh& mesh, const std::string& name) {
 
   ExemplarWeave weave;
   weave.tilt = weave_tilt(mesh, vertices_of);
-  const double cs = std::cos(weave.tilt), sn = std::sin(weave.tilt);
   std::vector<Vec3> p(mesh.num_vertices());
-  for (size_t v = 0; v < p.size(); ++v) {
-    const Vec3& q = mesh.positions[v];
-    p[v] = Vec3(cs * q.x + sn * q.y, -sn * q.x + cs * q.y, q.z);
-  }
+  for (size_t v = 0; v < p.size(); ++v) p[v] = registered_point(weave, mesh.positions[v]);
 
   // Yarns by their run: warps along y, wefts along x.
   struct Yarn {

@@ -28,6 +28,12 @@ struct ExemplarWeave {
   double yarn_radius = 0.0;  //!< median half-thickness of the yarns across their run
 };
 
+//! `p` in the registered frame: turned by -tilt about z.
+Vec3 registered_point(const ExemplarWeave& weave, const Vec3& p);
+
+//! The element of each face as registration reads it: PLY `element` ids, else components.
+std::vector<int32_t> yarn_face_elements(const TriMesh& mesh);
+
 //! Registers `mesh` (its elements: PLY `element` ids or connected components) as an exemplar.
 //! \throw InputError(invalid_mesh) naming `name` when an element is not a yarn (not at least
 //!        twice as long along the weave's axes as across), there are fewer than three warps or

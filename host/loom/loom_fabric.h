@@ -1,0 +1,34 @@
+#pragma once
+//! A design woven at yarn level (paper 004, Sections 5.3-5.5 on meshes): every crossing copies
+//! its assigned exemplar block's two yarn pieces, seams between blocks are closed by moving the
+//! pieces' centrelines and cross-sections linearly over each block (the one-dimensional Poisson
+//! solve with the seam's mean as boundary value), and each warp and weft is swept as one closed
+//! tube from one edge of the design to the other.
+
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "loom/block_assignment.h"
+#include "loom/yarn_profile.h"
+#include "mesh/tri_mesh.h"
+
+namespace meshquilt {
+
+//! Where the crossings lie: crossing (r, c) at origin + r row_step + c column_step; z is up.
+struct LoomGrid {
+  glm::dvec2 origin{0.0}, row_step{0.0}, column_step{0.0};
+  int rows = 0, columns = 0;
+};
+
+struct LoomFabric {
+  TriMesh mesh;   //!< warp c is element c, weft r element columns + r; closed, outward
+  LoomGrid grid;  //!< the fabric spans [0, columns pitch.x] x [0, rows pitch.y]
+};
+
+//! Weaves `design` as `assignment` says from `exemplars` (profiled with equal sides), at the first
+//! exemplar's pitch; other exemplars are scaled to it.
+LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
+                        const std::vector<ExemplarProfiles>& exemplars);
+
+}  // namespace meshquilt
