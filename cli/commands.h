@@ -11,6 +11,7 @@ void add_inspect_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_batch_command(CLI::App& app);
+void add_loom_command(CLI::App& app);
 void add_embed_command(CLI::App& app);
 void add_edit_command(CLI::App& app);
 void add_animate_command(CLI::App& app);

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   meshquilt::cli::add_animate_command(app);
   meshquilt::cli::add_paint_command(app);
   meshquilt::cli::add_relief_command(app);
+  meshquilt::cli::add_loom_command(app);
   meshquilt::cli::add_batch_command(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,122 @@
+#include "jobs/loom_job.h"
+
+#include <cmath>
+
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/memory_budget.h"
+#include "loom/exemplar_weave.h"
+#include "loom/yarn_profile.h"
+
+namespace meshquilt {
+
+AssignmentMethod parse_assignment_method(const std::string& text) {
+  if (text == "naive") return AssignmentMethod::naive;
+  if (text == "greedy") return AssignmentMethod::greedy;
+  if (text == "structured") return AssignmentMethod::structured;
+  throw InputError("{method}: expected naive, greedy or structured, got '" + text + "'", ErrorKind::invalid_option);
+}
+
+void check_loom_request(const LoomRequest& r) {
+  if (r.exemplars.empty()) throw InputError("{exemplar}: give at least one woven exemplar", ErrorKind::invalid_option);
+  if (r.stations < 2 || r.stations > 64 || r.stations % 2 != 0)
+    throw InputError("{stations}: expected an even number in 2..64, got " + std::to_string(r.stations),
+                     ErrorKind::invalid_option);
+  if (r.sides < 3 || r.sides > 64)
+    throw InputError("{sides}: expected 3..64, got " + std::to_string(r.sides), ErrorKind::invalid_option);
+  if (r.design.width < 1 || r.design.height < 1)
+    throw InputError(r.design_name + ": an empty design", ErrorKind::invalid_option);
+  const double crossings = static_cast<double>(r.design.width) * r.design.height;
+  // The assignment, and the fabric: two yarn pieces a crossing, each stations x sides quads.
+  double bytes = crossings * 64.0;
+  if (!r.assignment_only) bytes += crossings * 2.0 * r.stations * r.sides * (2.0 * 16.0 + 24.0 + 96.0);
+  check_memory_budget(bytes, r.design_name + " (" + std::to_string(r.design.height) + " x " +
+                                 std::to_string(r.design.width) + " crossings)");
+}
+
+LoomDesign design_of(const ColourImage& image) {
+  LoomDesign d{image.height, image.width, {}};
+  d.warp_over.reserve(static_cast<size_t>(image.width) * image.height);
+  for (int r = 0; r < image.height; ++r)
+    for (int c = 0; c < image.width; ++c) d.warp_over.push_back(luma(image.at(c, r)) < 0.5 ? 1 : 0);
+  return d;
+}
+
+LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double)>& progress) {
+  const auto report = [&](double share) {
+    if (progress) progress(share);
+  };
+  LoomOutcome out;
+  out.design = design_of(request.design);
+  std::vector<ExemplarProfiles> profiles;
+  std::vector<WeavePattern> patterns;
+  nlohmann::json exemplars = nlohmann::json::array();
+  for (size_t u = 0; u < request.exemplars.size(); ++u) {
+    const std::string& name = request.exemplar_names[u];
+    const ExemplarWeave weave = register_exemplar(request.exemplars[u], name);
+    patterns.push_back(weave.pattern);
+    exemplars.push_back({{"file", name},
+                         {"warps", weave.pattern.warps},
+                         {"wefts", weave.pattern.wefts},
+                         {"pitch", {weave.pitch.x, weave.pitch.y}},
+                         {"origin", {weave.origin.x, weave.origin.y}},
+                         {"tilt_degrees", weave.tilt * 180.0 / kPi},
+                         {"yarn_radius", weave.yarn_radius}});
+    if (!request.assignment_only)
+      profiles.push_back(profile_exemplar(request.exemplars[u], weave, request.stations, request.sides, name));
+  }
+  report(0.1);
+  AssignmentOptions options;
+  options.method = request.method;
+  options.seed = request.seed;
+  out.assignment = assign_blocks(out.design, patterns, options);
+  const AssignmentScores scores = score_assignment(out.design, patterns, out.assignment);
+  report(0.3);
+  nlohmann::json stats = {{"design", {{"rows", out.design.rows}, {"columns", out.design.columns}}},
+                          {"exemplars", exemplars},
+                          {"assignment",
+                           {{"method", request.method == AssignmentMethod::naive    ? "naive"
+                                       : request.method == AssignmentMethod::greedy ? "greedy"
+                                                                                    : "structured"},
+                            {"correct", scores.correct},
+                            {"consistent", scores.consistent},
+                            {"continuous", scores.continuous},
+                            {"continuous_along_warps", scores.continuous_along_warps}}}};
+  if (!request.assignment_only) {
+    out.fabric = weave_fabric(out.design, out.assignment, profiles);
+    const LoomGrid& g = out.fabric.grid;
+    stats["grid"] = {{"origin", {g.origin.x, g.origin.y}},
+                     {"row_step", {g.row_step.x, g.row_step.y}},
+                     {"column_step", {g.column_step.x, g.column_step.y}},
+                     {"rows", g.rows},
+                     {"columns", g.columns}};
+    stats["faces"] = out.fabric.mesh.num_faces();
+    stats["vertices"] = out.fabric.mesh.num_vertices();
+    stats["elements"] = g.rows + g.columns;
+  }
+  out.stats = {{"loom", stats}};
+  report(1.0);
+  return out;
+}
+
+RgbImage assignment_picture(const LoomAssignment& a, int exemplars) {
+  RgbImage image;
+  image.width = a.columns;
+  image.height = a.rows;
+  image.rgb.reserve(static_cast<size_t>(a.rows) * a.columns * 3);
+  for (int r = 0; r < a.rows; ++r)
+    for (int c = 0; c < a.columns; ++c) {
+      const LoomBlock& b = a.at(r, c);
+      const double hue = 6.0 * b.exemplar / std::max(1, exemplars);
+      const double x = 1.0 - std::abs(std::fmod(hue, 2.0) - 1.0);
+      glm::dvec3 rgb = hue < 1 ? glm::dvec3(1, x, 0) : hue < 2 ? glm::dvec3(x, 1, 0) : hue < 3 ? glm::dvec3(0, 1, x)
+                     : hue < 4 ? glm::dvec3(0, x, 1) : hue < 5 ? glm::dvec3(x, 0, 1) : glm::dvec3(1, 0, x);
+      const bool continues = r > 0 && a.at(r - 1, c).exemplar == b.exemplar && a.at(r - 1, c).x == b.x &&
+                             a.at(r - 1, c).y == b.y + 1;
+      const glm::dvec3 shade = continues ? 0.5 * rgb + glm::dvec3(0.5) : 0.6 * rgb;
+      for (int k = 0; k < 3; ++k) image.rgb.push_back(static_cast<uint8_t>(std::lround(255.0 * shade[k])));
+    }
+  return image;
+}
+
+}  // namespace meshquilt

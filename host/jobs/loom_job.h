@@ -1,0 +1,59 @@
+#pragma once
+//! A loom job as every front end runs it: a binary design image and woven exemplars in, the
+//! assignment of exemplar blocks to its crossings and the fabric woven from them out, with the
+//! stats JSON of `loom --stats` (paper 004).
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "loom/block_assignment.h"
+#include "loom/loom_fabric.h"
+#include "mesh/tri_mesh.h"
+#include "paint/colour_image.h"
+#include "render/rgb_image.h"
+
+namespace meshquilt {
+
+struct LoomRequest {
+  ColourImage design;                      //!< one pixel a crossing; dark: the warp over the weft
+  std::string design_name = "design";      //!< in messages and stats
+  std::vector<TriMesh> exemplars;          //!< woven swatch meshes, as read
+  std::vector<std::string> exemplar_names;  //!< in messages and stats
+  AssignmentMethod method = AssignmentMethod::structured;
+  uint64_t seed = 1;
+  int stations = 8;  //!< samples along a yarn per pitch
+  int sides = 8;     //!< vertices around a yarn
+  bool assignment_only = false;  //!< assign blocks, weave nothing
+};
+
+//! "naive", "greedy" or "structured". \throw InputError(invalid_option) "{method}: ..." otherwise.
+AssignmentMethod parse_assignment_method(const std::string& text);
+
+//! \throw InputError(invalid_option) naming {name}: no exemplar, stations outside 2..64 (even),
+//!        sides outside 3..64; too_large when the fabric's estimated size passes the memory
+//!        budget (a design of rows x columns makes 4 stations x sides faces per yarn a crossing).
+void check_loom_request(const LoomRequest& request);
+
+//! The design read from its image: dark (grey < 0.5) where the warp lies over the weft.
+LoomDesign design_of(const ColourImage& image);
+
+struct LoomOutcome {
+  LoomDesign design;
+  LoomAssignment assignment;
+  LoomFabric fabric;    //!< empty mesh with assignment_only
+  nlohmann::json stats;  //!< `loom --stats` less file names and seconds
+};
+
+//! Registers the exemplars, assigns blocks and (unless assignment_only) weaves the fabric.
+//! `progress(share)` is called between stages. \throw what register_exemplar and assign_blocks
+//! throw, naming the exemplar's file.
+LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double)>& progress = {});
+
+//! A false-colour picture of the assignment, as the paper's Figure 4 right column: a hue per
+//! exemplar, lighter where the block continues its upper neighbour's.
+RgbImage assignment_picture(const LoomAssignment& assignment, int exemplars);
+
+}  // namespace meshquilt
