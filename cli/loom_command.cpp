@@ -1,6 +1,7 @@
 // `meshquilt loom --design D --exemplar A [--exemplar B ...] -o OUT`: weaves a design at yarn
 // level from woven exemplars (paper 004): each crossing copies an exemplar block chosen for the
 // right yarn on top, agreeing neighbours and continuing yarns; each yarn one closed tube.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -65,7 +66,9 @@ void run_loom_command(const LoomArgs& args) {
   }
   if (!args.picture.empty())
     write_file_atomic(args.picture,
-                      encode_png(assignment_picture(outcome.assignment, static_cast<int>(request.exemplars.size()))));
+                      encode_png(assignment_picture(
+                          outcome.assignment, static_cast<int>(request.exemplars.size()),
+                          std::max(1, 512 / std::max(outcome.assignment.rows, outcome.assignment.columns)))));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json summary = {{"design_file", args.design}, {"output", args.output}};
   summary.update(outcome.stats);

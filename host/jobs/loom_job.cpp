@@ -99,22 +99,26 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
   return out;
 }
 
-RgbImage assignment_picture(const LoomAssignment& a, int exemplars) {
+RgbImage assignment_picture(const LoomAssignment& a, int exemplars, int pixels) {
   RgbImage image;
-  image.width = a.columns;
-  image.height = a.rows;
-  image.rgb.reserve(static_cast<size_t>(a.rows) * a.columns * 3);
+  image.width = a.columns * pixels;
+  image.height = a.rows * pixels;
+  image.rgb.assign(static_cast<size_t>(image.width) * image.height * 3, 0);
   for (int r = 0; r < a.rows; ++r)
     for (int c = 0; c < a.columns; ++c) {
       const LoomBlock& b = a.at(r, c);
       const double hue = 6.0 * b.exemplar / std::max(1, exemplars);
       const double x = 1.0 - std::abs(std::fmod(hue, 2.0) - 1.0);
-      glm::dvec3 rgb = hue < 1 ? glm::dvec3(1, x, 0) : hue < 2 ? glm::dvec3(x, 1, 0) : hue < 3 ? glm::dvec3(0, 1, x)
-                     : hue < 4 ? glm::dvec3(0, x, 1) : hue < 5 ? glm::dvec3(x, 0, 1) : glm::dvec3(1, 0, x);
+      const glm::dvec3 rgb = hue < 1 ? glm::dvec3(1, x, 0) : hue < 2 ? glm::dvec3(x, 1, 0) : hue < 3 ? glm::dvec3(0, 1, x)
+                           : hue < 4 ? glm::dvec3(0, x, 1) : hue < 5 ? glm::dvec3(x, 0, 1) : glm::dvec3(1, 0, x);
       const bool continues = r > 0 && a.at(r - 1, c).exemplar == b.exemplar && a.at(r - 1, c).x == b.x &&
                              a.at(r - 1, c).y == b.y + 1;
       const glm::dvec3 shade = continues ? 0.5 * rgb + glm::dvec3(0.5) : 0.6 * rgb;
-      for (int k = 0; k < 3; ++k) image.rgb.push_back(static_cast<uint8_t>(std::lround(255.0 * shade[k])));
+      for (int y = r * pixels; y < (r + 1) * pixels; ++y)
+        for (int x0 = c * pixels; x0 < (c + 1) * pixels; ++x0)
+          for (int k = 0; k < 3; ++k)
+            image.rgb[(static_cast<size_t>(y) * image.width + x0) * 3 + k] =
+                static_cast<uint8_t>(std::lround(255.0 * shade[k]));
     }
   return image;
 }

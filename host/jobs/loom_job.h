@@ -53,7 +53,7 @@ struct LoomOutcome {
 LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double)>& progress = {});
 
 //! A false-colour picture of the assignment, as the paper's Figure 4 right column: a hue per
-//! exemplar, lighter where the block continues its upper neighbour's.
-RgbImage assignment_picture(const LoomAssignment& assignment, int exemplars);
+//! exemplar, lighter where the block continues the one above it; `pixels` square a crossing.
+RgbImage assignment_picture(const LoomAssignment& assignment, int exemplars, int pixels = 1);
 
 }  // namespace meshquilt
