@@ -174,8 +174,37 @@ def measure_quality(folder, options):
     return {"table": run([os.path.join(PERF, "quality_suite"), "--seeds", "1,2,3"], cwd=folder).strip()}
 
 
+def measure_loom(folder, options):
+    """The loom over a three-region design (tests/loom/loom_cli_test.py's) from its three exemplars:
+    the assignment of 2,048 x 2,048 crossings alone, and the fabric of 512 x 512."""
+    sys.path.insert(0, os.path.join(ROOT, "tests", "loom"))
+    import loom_cli_test  # noqa: E402 (numpy)
+    w = lambda name: os.path.join(folder, name)
+    run([sys.executable, os.path.join(ROOT, "tests", "loom", "make_exemplar.py"), w("plain.obj"), "--tilt", "7"])
+    run([CLI, "swatch", "weave", "--pattern", "twill:2/2", "--warps", "8", "--wefts", "8", "-o", w("twill.ply")])
+    run([CLI, "swatch", "weave", "--pattern", "satin:4/1", "--warps", "10", "--wefts", "10", "--sides", "6", "-o",
+         w("satin.ply")])
+    values = {}
+    for size, extra in ((2048, ["--assignment-only"]), (512, [])):
+        pattern = loom_cli_test.design(size)
+        with open(w("design.pbm"), "w") as f:
+            f.write("P1\n%d %d\n" % (size, size) + "\n".join("".join(map(str, r)) for r in pattern) + "\n")
+        out = w("out.txt" if extra else "out.ply")
+        seconds, mib = timed([CLI, "loom", "--design", w("design.pbm"), "--exemplar", w("plain.obj"), "--exemplar",
+                              w("twill.ply"), "--exemplar", w("satin.ply"), "-o", out, "--stats", w("loom.json"),
+                              "--progress", "none", *extra])
+        with open(w("loom.json")) as f:
+            loom = json.load(f)["loom"]
+        values["design%d" % size] = {"seconds": seconds, "peak_mib": mib, "faces": loom.get("faces", 0),
+                                     "consistent": loom["assignment"]["consistent"],
+                                     "continuous": loom["assignment"]["continuous"],
+                                     "megabytes": os.path.getsize(out) / 1e6}
+    return values
+
+
 GROUPS = {"default_job": measure_default_job, "repeat": measure_repeat, "table1": measure_table1,
-          "scaling": measure_scaling, "benchmarks": measure_benchmarks, "quality": measure_quality}
+          "scaling": measure_scaling, "benchmarks": measure_benchmarks, "quality": measure_quality,
+          "loom": measure_loom}
 
 
 def machine():
