@@ -3,7 +3,9 @@
 // right yarn on top, agreeing neighbours and continuing yarns; each yarn one closed tube.
 #include <algorithm>
 #include <chrono>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -47,6 +49,9 @@ void run_loom_command(const LoomArgs& args) {
     request.exemplars.push_back(read_mesh(file));
     request.exemplar_names.push_back(file);
   }
+  std::string extension = std::filesystem::path(args.output).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  if (!args.assignment_only && extension == ".ply") request.ply_output = args.output;  // streamed
   check_loom_request(request);
   ProgressReporter progress(parse_progress_mode(args.progress), "loom");
   LoomOutcome outcome = run_loom(request, [&](double share) { progress.update(share, 1.0); });
@@ -61,7 +66,7 @@ void run_loom_command(const LoomArgs& args) {
       text += "\n";
     }
     write_text_atomic(args.output, text);
-  } else {
+  } else if (request.ply_output.empty()) {
     write_mesh(outcome.fabric.mesh, args.output);
   }
   if (!args.picture.empty())

@@ -59,66 +59,90 @@ bool write_all(int fd, const char* data, size_t size) {
 
 }  // namespace
 
+AtomicFileStream::AtomicFileStream(const std::filesystem::path& file, const CancelToken* cancel)
+    : name_(file.string()),
+      directory_(file.has_parent_path() ? file.parent_path() : std::filesystem::path(".")),
+      cancel_(cancel) {
+  static std::atomic<uint64_t> counter{0};
+  // Same folder as the target, so the rename stays on one file system and is atomic.
+  temporary_ = (directory_ / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." +
+                              std::to_string(counter.fetch_add(1)) + ".tmp"))
+                   .string();
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd_ < 0) throw IoError(ErrorKind::write_failed, name_ + ": cannot create temporary file: " + std::strerror(errno));
+  slot_ = register_pending(temporary_);
+}
+
+AtomicFileStream::~AtomicFileStream() {
+  if (!temporary_.empty()) discard();
+}
+
+void AtomicFileStream::discard() noexcept {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  ::unlink(temporary_.c_str());
+  unregister_pending(slot_);
+  temporary_.clear();
+}
+
+void AtomicFileStream::fail(const std::string& reason) {
+  const std::string message = name_ + ": " + reason + ": " + std::strerror(errno);
+  discard();
+  throw IoError(ErrorKind::write_failed, message);
+}
+
+void AtomicFileStream::flush() {
+  if (cancel_ && cancel_->cancelled()) {
+    discard();
+    throw Cancelled();
+  }
+  if (!write_all(fd_, buffer_.data(), buffer_.size())) fail("write failed");
+  buffer_.clear();
+}
+
+void AtomicFileStream::write(std::string_view bytes) {
+  constexpr size_t kChunk = size_t{4} << 20;
+  while (!bytes.empty()) {
+    const size_t n = std::min(kChunk - buffer_.size(), bytes.size());
+    buffer_.append(bytes.substr(0, n));
+    bytes.remove_prefix(n);
+    if (buffer_.size() >= kChunk) flush();
+  }
+}
+
+void AtomicFileStream::commit() {
+  flush();
+  // The data must be on disk before the rename makes it the file: otherwise a power loss after
+  // the rename can leave an empty or partial file under the final name.
+  if (::fsync(fd_) != 0) fail("fsync failed");
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("close failed");
+  if (cancel_ && cancel_->cancelled()) {
+    discard();
+    throw Cancelled();
+  }
+  if (::rename(temporary_.c_str(), name_.c_str()) != 0) fail("cannot replace file");
+  unregister_pending(slot_);
+  temporary_.clear();
+  // Persist the rename itself; a folder that cannot be opened or synced (some file systems)
+  // does not make the completed write a failure.
+  const int dir_fd = ::open(directory_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir_fd >= 0) {
+    ::fsync(dir_fd);
+    ::close(dir_fd);
+  }
+}
+
 void write_file_atomic(const std::filesystem::path& file, std::string_view content, const CancelToken* cancel) {
   write_file_atomic(file, std::span<const std::string_view>(&content, 1), cancel);
 }
 
 void write_file_atomic(const std::filesystem::path& file, std::span<const std::string_view> pieces,
                        const CancelToken* cancel) {
-  const std::string name = file.string();
-  static std::atomic<uint64_t> counter{0};
-  const std::filesystem::path directory = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  // Same folder as the target, so the rename stays on one file system and is atomic.
-  const std::string temporary = (directory / ("." + file.filename().string() + "." + std::to_string(::getpid()) + "." +
-                                              std::to_string(counter.fetch_add(1)) + ".tmp"))
-                                    .string();
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) throw IoError(ErrorKind::write_failed, name + ": cannot create temporary file: " + std::strerror(errno));
-  const int slot = register_pending(temporary);
-  int open_fd = fd;
-  auto discard = [&] {
-    if (open_fd >= 0) ::close(open_fd);
-    open_fd = -1;
-    ::unlink(temporary.c_str());
-    unregister_pending(slot);
-  };
-  auto fail = [&](const std::string& reason) {
-    const std::string message = name + ": " + reason + ": " + std::strerror(errno);
-    discard();
-    throw IoError(ErrorKind::write_failed, message);
-  };
-  auto poll = [&] {
-    if (cancel && cancel->cancelled()) {
-      discard();
-      throw Cancelled();
-    }
-  };
-  constexpr size_t kChunk = size_t{4} << 20;
-  for (std::string_view content : pieces)
-    for (size_t offset = 0; offset < content.size(); offset += kChunk) {
-      poll();
-      const size_t n = std::min(kChunk, content.size() - offset);
-      if (!write_all(fd, content.data() + offset, n)) fail("write failed");
-    }
-  // The data must be on disk before the rename makes it the file: otherwise a power loss after
-  // the rename can leave an empty or partial file under the final name.
-  if (::fsync(fd) != 0) fail("fsync failed");
-  open_fd = -1;
-  if (::close(fd) != 0) {
-    const std::string message = name + ": close failed: " + std::strerror(errno);
-    discard();
-    throw IoError(ErrorKind::write_failed, message);
-  }
-  poll();
-  if (::rename(temporary.c_str(), name.c_str()) != 0) fail("cannot replace file");
-  unregister_pending(slot);
-  // Persist the rename itself; a folder that cannot be opened or synced (some file systems)
-  // does not make the completed write a failure.
-  const int dir_fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir_fd >= 0) {
-    ::fsync(dir_fd);
-    ::close(dir_fd);
-  }
+  AtomicFileStream stream(file, cancel);
+  for (std::string_view piece : pieces) stream.write(piece);
+  stream.commit();
 }
 
 void remove_pending_temporaries() noexcept {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace meshquilt {
@@ -22,6 +23,31 @@ void write_file_atomic(const std::filesystem::path& file, std::string_view conte
 //! The same, with the content given as pieces written one after another.
 void write_file_atomic(const std::filesystem::path& file, std::span<const std::string_view> pieces,
                        const CancelToken* cancel = nullptr);
+
+//! A file written piece by piece and replaced atomically, as write_file_atomic does: for outputs
+//! too large to hold. Destroyed before commit(), it removes its temporary file and leaves `file`
+//! untouched.
+class AtomicFileStream {
+ public:
+  //! \throw IoError(write_failed) when the temporary file cannot be created.
+  explicit AtomicFileStream(const std::filesystem::path& file, const CancelToken* cancel = nullptr);
+  ~AtomicFileStream();
+  AtomicFileStream(const AtomicFileStream&) = delete;
+  AtomicFileStream& operator=(const AtomicFileStream&) = delete;
+  //! Appends `bytes` (buffered). \throw IoError(write_failed); Cancelled when `cancel` fires.
+  void write(std::string_view bytes);
+  //! Flushes, fsyncs and renames the file into place. \throw as write().
+  void commit();
+
+ private:
+  void flush();
+  void fail(const std::string& reason);
+  void discard() noexcept;
+  std::string name_, temporary_, buffer_;
+  std::filesystem::path directory_;
+  const CancelToken* cancel_;
+  int fd_ = -1, slot_ = -1;
+};
 
 //! Unlinks every temporary file write_file_atomic is writing now. Async-signal-safe: meant for
 //! a signal handler that is about to end the process.

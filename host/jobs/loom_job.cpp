@@ -27,9 +27,10 @@ void check_loom_request(const LoomRequest& r) {
   if (r.design.width < 1 || r.design.height < 1)
     throw InputError(r.design_name + ": an empty design", ErrorKind::invalid_option);
   const double crossings = static_cast<double>(r.design.width) * r.design.height;
-  // The assignment, and the fabric: two yarn pieces a crossing, each stations x sides quads.
+  // The assignment; the yarns' stations (two pieces a crossing); the mesh unless streamed.
   double bytes = crossings * 64.0;
-  if (!r.assignment_only) bytes += crossings * 2.0 * r.stations * r.sides * (2.0 * 16.0 + 24.0 + 96.0);
+  if (!r.assignment_only) bytes += crossings * 2.0 * r.stations * (8.0 * (r.sides + 2) + 64.0);
+  if (!r.assignment_only && r.ply_output.empty()) bytes += crossings * 2.0 * r.stations * r.sides * (2.0 * 16.0 + 24.0);
   check_memory_budget(bytes, r.design_name + " (" + std::to_string(r.design.height) + " x " +
                                  std::to_string(r.design.width) + " crossings)");
 }
@@ -83,15 +84,25 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                             {"continuous", scores.continuous},
                             {"continuous_along_warps", scores.continuous_along_warps}}}};
   if (!request.assignment_only) {
-    out.fabric = weave_fabric(out.design, out.assignment, profiles);
+    size_t faces = 0, vertices = 0;
+    if (request.ply_output.empty()) {
+      out.fabric = weave_fabric(out.design, out.assignment, profiles);
+      faces = out.fabric.mesh.num_faces();
+      vertices = out.fabric.mesh.num_vertices();
+    } else {
+      const LoomFabricFile written = write_fabric_ply(out.design, out.assignment, profiles, request.ply_output);
+      out.fabric.grid = written.grid;
+      faces = written.faces;
+      vertices = written.vertices;
+    }
     const LoomGrid& g = out.fabric.grid;
     stats["grid"] = {{"origin", {g.origin.x, g.origin.y}},
                      {"row_step", {g.row_step.x, g.row_step.y}},
                      {"column_step", {g.column_step.x, g.column_step.y}},
                      {"rows", g.rows},
                      {"columns", g.columns}};
-    stats["faces"] = out.fabric.mesh.num_faces();
-    stats["vertices"] = out.fabric.mesh.num_vertices();
+    stats["faces"] = faces;
+    stats["vertices"] = vertices;
     stats["elements"] = g.rows + g.columns;
   }
   out.stats = {{"loom", stats}};

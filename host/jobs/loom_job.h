@@ -3,6 +3,7 @@
 //! assignment of exemplar blocks to its crossings and the fabric woven from them out, with the
 //! stats JSON of `loom --stats` (paper 004).
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,14 +28,17 @@ struct LoomRequest {
   int stations = 8;  //!< samples along a yarn per pitch
   int sides = 8;     //!< vertices around a yarn
   bool assignment_only = false;  //!< assign blocks, weave nothing
+  //! When set, the fabric is written there as binary PLY yarn by yarn (write_fabric_ply) instead
+  //! of returned: for fabrics too large to hold.
+  std::filesystem::path ply_output;
 };
 
 //! "naive", "greedy" or "structured". \throw InputError(invalid_option) "{method}: ..." otherwise.
 AssignmentMethod parse_assignment_method(const std::string& text);
 
 //! \throw InputError(invalid_option) naming {name}: no exemplar, stations outside 2..64 (even),
-//!        sides outside 3..64; too_large when the fabric's estimated size passes the memory
-//!        budget (a design of rows x columns makes 4 stations x sides faces per yarn a crossing).
+//!        sides outside 3..64; too_large when the job's estimated memory passes the budget (the
+//!        yarns' stations, and unless streamed the mesh: 4 x stations x sides faces a crossing).
 void check_loom_request(const LoomRequest& request);
 
 //! The design read from its image: dark (grey < 0.5) where the warp lies over the weft.
@@ -43,7 +47,7 @@ LoomDesign design_of(const ColourImage& image);
 struct LoomOutcome {
   LoomDesign design;
   LoomAssignment assignment;
-  LoomFabric fabric;    //!< empty mesh with assignment_only
+  LoomFabric fabric;    //!< empty mesh with assignment_only or ply_output
   nlohmann::json stats;  //!< `loom --stats` less file names and seconds
 };
 

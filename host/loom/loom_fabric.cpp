@@ -1,6 +1,10 @@
 #include "loom/loom_fabric.h"
 
 #include <cmath>
+#include <cstring>
+#include <string>
+
+#include "core/atomic_write.h"
 #include <glm/geometric.hpp>
 
 #include "core/constants.h"
@@ -62,45 +66,52 @@ std::vector<Station> join_pieces(std::vector<std::vector<Station>>& pieces) {
   return yarn;
 }
 
-// Sweeps a yarn as a capped tube: station s at run position run0 + s run_step along `run`, its
-// centre `nominal` sideways plus its offset along `side`, radii turning from `side` toward +z.
-void sweep(TriMesh& mesh, const std::vector<Station>& yarn, int sides, const glm::dvec3& run,
-           const glm::dvec3& side, const glm::dvec3& start, double run_step, int32_t element) {
-  const int32_t first = static_cast<int32_t>(mesh.positions.size());
-  const size_t first_face = mesh.triangles.size();
+// A yarn's tube: station s at run position start + s run_step along `run`, its centre offset
+// sideways along `side` and up, its radii turning from `side` toward +z; then the centres of
+// its two caps. Rings of `sides` vertices, station by station.
+std::vector<Vec3> tube_positions(const std::vector<Station>& yarn, int sides, const glm::dvec3& run,
+                                 const glm::dvec3& side, const glm::dvec3& start, double run_step) {
   const glm::dvec3 up(0.0, 0.0, 1.0);
-  std::vector<Vec3> centres;
+  std::vector<Vec3> positions;
+  positions.reserve(yarn.size() * static_cast<size_t>(sides) + 2);
   for (size_t s = 0; s < yarn.size(); ++s) {
     const glm::dvec3 c = start + run * (run_step * static_cast<double>(s)) + side * yarn[s].side + up * yarn[s].z;
-    centres.push_back(c);
     for (int k = 0; k < sides; ++k) {
       const double a = 2.0 * kPi * k / sides;
-      mesh.positions.push_back(c + yarn[s].radius[k] * (std::cos(a) * side + std::sin(a) * up));
+      positions.push_back(c + yarn[s].radius[k] * (std::cos(a) * side + std::sin(a) * up));
     }
   }
-  const auto at = [&](size_t s, int k) { return first + static_cast<int32_t>(s * sides + (k % sides)); };
-  for (size_t s = 0; s + 1 < yarn.size(); ++s)
+  for (const size_t s : {size_t{0}, yarn.size() - 1})
+    positions.push_back(start + run * (run_step * static_cast<double>(s)) + side * yarn[s].side + up * yarn[s].z);
+  return positions;
+}
+
+// The tube's faces over its own vertices (see tube_positions), wound one way or the other.
+std::vector<Tri> tube_triangles(size_t stations, int sides, bool flip) {
+  const auto at = [sides](size_t s, int k) { return static_cast<int32_t>(s * sides + (k % sides)); };
+  std::vector<Tri> t;
+  t.reserve(2 * static_cast<size_t>(sides) * stations);
+  for (size_t s = 0; s + 1 < stations; ++s)
     for (int k = 0; k < sides; ++k) {
-      mesh.triangles.push_back({at(s, k), at(s + 1, k), at(s + 1, k + 1)});
-      mesh.triangles.push_back({at(s, k), at(s + 1, k + 1), at(s, k + 1)});
+      t.push_back({at(s, k), at(s + 1, k), at(s + 1, k + 1)});
+      t.push_back({at(s, k), at(s + 1, k + 1), at(s, k + 1)});
     }
-  const int32_t head = static_cast<int32_t>(mesh.positions.size()), tail = head + 1;
-  mesh.positions.push_back(centres.front());
-  mesh.positions.push_back(centres.back());
-  const size_t end = yarn.size() - 1;
+  const int32_t head = static_cast<int32_t>(stations * sides), tail = head + 1;
   for (int k = 0; k < sides; ++k) {
-    mesh.triangles.push_back({head, at(0, k), at(0, k + 1)});
-    mesh.triangles.push_back({tail, at(end, k + 1), at(end, k)});
+    t.push_back({head, at(0, k), at(0, k + 1)});
+    t.push_back({tail, at(stations - 1, k + 1), at(stations - 1, k)});
   }
-  // Outward: a positive enclosed volume.
+  if (flip)
+    for (Tri& f : t) std::swap(f[1], f[2]);
+  return t;
+}
+
+// Whether the tube must be wound the other way to face outward (its enclosed volume negative).
+bool inward(const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
   double volume = 0.0;
-  for (size_t f = first_face; f < mesh.triangles.size(); ++f) {
-    const Tri& t = mesh.triangles[f];
-    volume += glm::dot(mesh.positions[t[0]], glm::cross(mesh.positions[t[1]], mesh.positions[t[2]]));
-  }
-  if (volume < 0.0)
-    for (size_t f = first_face; f < mesh.triangles.size(); ++f) std::swap(mesh.triangles[f][1], mesh.triangles[f][2]);
-  mesh.elements.resize(mesh.triangles.size(), element);
+  for (const Tri& t : triangles)
+    volume += glm::dot(positions[t[0]], glm::cross(positions[t[1]], positions[t[2]]));
+  return volume < 0.0;
 }
 
 // Where blocks from different exemplars, or inconsistent ones, meet, the two yarns of a crossing
@@ -187,13 +198,37 @@ void separate_crossings(std::vector<std::vector<Station>>& warps, std::vector<st
   }
 }
 
-}  // namespace
+// The design's yarns, station by station, ready to sweep.
+struct WovenYarns {
+  LoomGrid grid;
+  glm::dvec2 pitch{0.0};
+  int per_pitch = 0, sides = 0;
+  std::vector<std::vector<Station>> warps, wefts;
 
-LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
-                        const std::vector<ExemplarProfiles>& exemplars) {
-  LoomFabric out;
+  size_t count() const { return warps.size() + wefts.size(); }
+  // Yarn i: warps first (element c), then wefts (element columns + r).
+  const std::vector<Station>& yarn(size_t i) const { return i < warps.size() ? warps[i] : wefts[i - warps.size()]; }
+  std::vector<Vec3> positions(size_t i) const {
+    if (i < warps.size()) {
+      const glm::dvec2 top = grid.origin + static_cast<double>(i) * grid.column_step - 0.5 * grid.row_step;
+      return tube_positions(warps[i], sides, glm::dvec3(0.0, -1.0, 0.0), glm::dvec3(1.0, 0.0, 0.0),
+                            glm::dvec3(top, 0.0), pitch.y / per_pitch);
+    }
+    const size_t r = i - warps.size();
+    const glm::dvec2 left = grid.origin + static_cast<double>(r) * grid.row_step - 0.5 * grid.column_step;
+    return tube_positions(wefts[r], sides, glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0),
+                          glm::dvec3(left, 0.0), pitch.x / per_pitch);
+  }
+};
+
+WovenYarns weave_yarns(const LoomDesign& design, const LoomAssignment& assignment,
+                       const std::vector<ExemplarProfiles>& exemplars) {
+  WovenYarns out;
   const glm::dvec2 pitch = exemplars[0].weave.pitch;
   const int pp = exemplars[0].per_pitch, sides = exemplars[0].sides;
+  out.pitch = pitch;
+  out.per_pitch = pp;
+  out.sides = sides;
   LoomGrid& grid = out.grid;
   grid.rows = design.rows;
   grid.columns = design.columns;
@@ -212,7 +247,6 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
         }
     mid_z.push_back(count > 0.0 ? sum / count : 0.0);
   }
-  std::vector<std::vector<Station>> warps, wefts;
   // Warp c runs down the design (row r + 1 is the exemplar's weft y - 1): stations from the
   // block's top, (y + 1) per_pitch, down to y per_pitch.
   for (int c = 0; c < design.columns; ++c) {
@@ -224,7 +258,7 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
       for (int j = 0; j <= pp; ++j)
         piece.push_back(station_of(p, static_cast<size_t>((b.y + 1) * pp - j), sides, scale[b.exemplar], mid_z[b.exemplar]));
     }
-    warps.push_back(join_pieces(pieces));
+    out.warps.push_back(join_pieces(pieces));
   }
   // Weft r runs across the design with the exemplar's x: stations x per_pitch to (x + 1) per_pitch.
   for (int r = 0; r < design.rows; ++r) {
@@ -236,19 +270,77 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
       for (int j = 0; j <= pp; ++j)
         piece.push_back(station_of(p, static_cast<size_t>(b.x * pp + j), sides, scale[b.exemplar], mid_z[b.exemplar]));
     }
-    wefts.push_back(join_pieces(pieces));
+    out.wefts.push_back(join_pieces(pieces));
   }
-  separate_crossings(warps, wefts, pp, sides, pitch.y / pp, pitch.x / pp);
-  for (int c = 0; c < design.columns; ++c) {
-    const glm::dvec2 top = grid.origin + static_cast<double>(c) * grid.column_step - 0.5 * grid.row_step;
-    sweep(out.mesh, warps[c], sides, glm::dvec3(0.0, -1.0, 0.0), glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(top, 0.0),
-          pitch.y / pp, c);
+  separate_crossings(out.warps, out.wefts, pp, sides, pitch.y / pp, pitch.x / pp);
+  return out;
+}
+
+}  // namespace
+
+LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
+                        const std::vector<ExemplarProfiles>& exemplars) {
+  const WovenYarns yarns = weave_yarns(design, assignment, exemplars);
+  LoomFabric out;
+  out.grid = yarns.grid;
+  TriMesh& mesh = out.mesh;
+  for (size_t i = 0; i < yarns.count(); ++i) {
+    const std::vector<Vec3> positions = yarns.positions(i);
+    std::vector<Tri> triangles = tube_triangles(yarns.yarn(i).size(), yarns.sides, false);
+    if (inward(positions, triangles)) triangles = tube_triangles(yarns.yarn(i).size(), yarns.sides, true);
+    const int32_t first = static_cast<int32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
+    for (Tri t : triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+    mesh.elements.resize(mesh.triangles.size(), static_cast<int32_t>(i));
   }
-  for (int r = 0; r < design.rows; ++r) {
-    const glm::dvec2 left = grid.origin + static_cast<double>(r) * grid.row_step - 0.5 * grid.column_step;
-    sweep(out.mesh, wefts[r], sides, glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(left, 0.0),
-          pitch.x / pp, design.columns + r);
+  return out;
+}
+
+LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& assignment,
+                                const std::vector<ExemplarProfiles>& exemplars, const std::filesystem::path& file,
+                                const CancelToken* cancel) {
+  const WovenYarns yarns = weave_yarns(design, assignment, exemplars);
+  LoomFabricFile out;
+  out.grid = yarns.grid;
+  const size_t sides = static_cast<size_t>(yarns.sides);
+  for (size_t i = 0; i < yarns.count(); ++i) {
+    out.vertices += yarns.yarn(i).size() * sides + 2;
+    out.faces += 2 * sides * yarns.yarn(i).size();
   }
+  AtomicFileStream stream(file, cancel);
+  stream.write("ply\nformat binary_little_endian 1.0\ncomment written by meshquilt\nelement vertex " +
+               std::to_string(out.vertices) + "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+               std::to_string(out.faces) + "\nproperty list uchar int vertex_indices\nproperty int element\nend_header\n");
+  // Vertices yarn by yarn, noting which tubes turn inward; then the faces, which need no positions.
+  std::vector<uint8_t> flip(yarns.count(), 0);
+  std::string bytes;
+  for (size_t i = 0; i < yarns.count(); ++i) {
+    const std::vector<Vec3> positions = yarns.positions(i);
+    flip[i] = inward(positions, tube_triangles(yarns.yarn(i).size(), yarns.sides, false)) ? 1 : 0;
+    bytes.resize(positions.size() * 3 * sizeof(double));
+    std::memcpy(bytes.data(), positions.data(), bytes.size());
+    stream.write(bytes);
+  }
+  int64_t first = 0;
+  for (size_t i = 0; i < yarns.count(); ++i) {
+    const std::vector<Tri> triangles = tube_triangles(yarns.yarn(i).size(), yarns.sides, flip[i] != 0);
+    bytes.resize(triangles.size() * 17);
+    char* at = bytes.data();
+    const int32_t element = static_cast<int32_t>(i);
+    for (const Tri& t : triangles) {
+      *at++ = 3;
+      for (int k = 0; k < 3; ++k) {
+        const int32_t v = static_cast<int32_t>(t[k] + first);
+        std::memcpy(at, &v, 4);
+        at += 4;
+      }
+      std::memcpy(at, &element, 4);
+      at += 4;
+    }
+    stream.write(bytes);
+    first += static_cast<int64_t>(yarns.yarn(i).size() * sides + 2);
+  }
+  stream.commit();
   return out;
 }
 

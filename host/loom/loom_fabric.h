@@ -5,12 +5,14 @@
 //! solve with the seam's mean as boundary value), and each warp and weft is swept as one closed
 //! tube from one edge of the design to the other.
 
+#include <filesystem>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "loom/block_assignment.h"
 #include "loom/yarn_profile.h"
+#include "core/error.h"
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
@@ -30,5 +32,18 @@ struct LoomFabric {
 //! exemplar's pitch; other exemplars are scaled to it.
 LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
                         const std::vector<ExemplarProfiles>& exemplars);
+
+//! What a streamed fabric holds.
+struct LoomFabricFile {
+  LoomGrid grid;
+  size_t vertices = 0, faces = 0;
+};
+
+//! weave_fabric written straight to `file` as binary PLY (the `element` face property), yarn by
+//! yarn, without holding the mesh: for fabrics too large to hold twice. The file is replaced
+//! atomically. \throw IoError(write_failed); Cancelled through `cancel`.
+LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& assignment,
+                                const std::vector<ExemplarProfiles>& exemplars, const std::filesystem::path& file,
+                                const CancelToken* cancel = nullptr);
 
 }  // namespace meshquilt

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "loom/loom_fabric.h"
+#include "mesh/mesh_io.h"
 #include "mesh/topology.h"
 #include "spatial/intersecting_pairs.h"
 #include "swatch/weave.h"
@@ -119,6 +123,27 @@ TEST(LoomFabric, ThreeRegionsFromThreeExemplarsWeaveTheDesign) {
   EXPECT_TRUE(pairs.empty()) << pairs.size() << " face pairs, the first between yarns "
                              << (pairs.empty() ? -1 : mesh.elements[pairs[0].first]) << " and "
                              << (pairs.empty() ? -1 : mesh.elements[pairs[0].second]);
+}
+
+TEST(LoomFabric, StreamedFileEqualsTheMeshWrittenWhole) {
+  const LoomDesign design = three_regions(12);
+  const std::vector<ExemplarProfiles> ex = exemplars(4, 6);
+  std::vector<WeavePattern> patterns;
+  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
+  const LoomAssignment assignment = assign_blocks(design, patterns);
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "meshquilt_loom_stream";
+  std::filesystem::create_directories(folder);
+  const LoomFabric whole = weave_fabric(design, assignment, ex);
+  write_mesh(whole.mesh, folder / "whole.ply");
+  const LoomFabricFile streamed = write_fabric_ply(design, assignment, ex, folder / "streamed.ply");
+  EXPECT_EQ(streamed.faces, whole.mesh.num_faces());
+  EXPECT_EQ(streamed.vertices, whole.mesh.num_vertices());
+  const auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(folder / "streamed.ply"), bytes(folder / "whole.ply"));
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
