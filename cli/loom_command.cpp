@@ -25,6 +25,7 @@ namespace {
 
 struct LoomArgs {
   std::string design, output, stats, picture, method = "structured", progress = "auto";
+  std::string weaves, warp_colors, weft_colors;
   std::vector<std::string> exemplars;
   uint64_t seed = 1;
   int stations = 8, sides = 8;
@@ -45,6 +46,9 @@ void run_loom_command(const LoomArgs& args) {
   if (!args.picture.empty()) check_writable(args.picture);
   request.design = read_colour_image(args.design);
   request.design_name = args.design;
+  if (!args.weaves.empty()) request.weaves = parse_colour_weaves(args.weaves);
+  if (!args.warp_colors.empty()) request.warp_types = read_colour_image(args.warp_colors);
+  if (!args.weft_colors.empty()) request.weft_types = read_colour_image(args.weft_colors);
   for (const std::string& file : args.exemplars) {
     request.exemplars.push_back(read_mesh(file));
     request.exemplar_names.push_back(file);
@@ -96,6 +100,12 @@ void add_loom_command(CLI::App& app) {
                   "the weave design: an image (PNG, PBM, PGM, PPM), a pixel a crossing, dark where the warp "
                   "(column) lies over the weft (row)")
       ->required();
+  cmd->add_option("--weaves", args->weaves,
+                  "read the design's colours as weaves: RRGGBB=plain,RRGGBB=twill:2/2,RRGGBB=satin:4/1,RRGGBB=FILE.pbm");
+  cmd->add_option("--warp-colors", args->warp_colors,
+                  "an image whose pixel (c, 0) colours warp c (a row of yarn types; repeats)");
+  cmd->add_option("--weft-colors", args->weft_colors,
+                  "an image whose pixel (0, r) colours weft r (a column of yarn types; repeats)");
   cmd->add_option("--exemplar", args->exemplars, "a woven swatch mesh (repeat for more)")->required();
   cmd->add_option("-o,--output", args->output, "the fabric mesh, or with --assignment-only a text file")->required();
   cmd->add_option("--method", args->method, "naive, greedy or structured")->capture_default_str();

@@ -1,10 +1,14 @@
 #include "jobs/loom_job.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/memory_budget.h"
+#include "edit/element_edit.h"
+#include "swatch/weave_pattern.h"
 #include "loom/exemplar_weave.h"
 #include "loom/yarn_profile.h"
 
@@ -35,11 +39,58 @@ void check_loom_request(const LoomRequest& r) {
                                  std::to_string(r.design.width) + " crossings)");
 }
 
-LoomDesign design_of(const ColourImage& image) {
+namespace {
+
+std::array<uint8_t, 3> bytes_of(const glm::dvec3& rgb) {
+  std::array<uint8_t, 3> out{};
+  for (int k = 0; k < 3; ++k) out[k] = static_cast<uint8_t>(std::lround(255.0 * std::clamp(rgb[k], 0.0, 1.0)));
+  return out;
+}
+
+std::string hex(const std::array<uint8_t, 3>& c) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%02X%02X%02X", c[0], c[1], c[2]);
+  return text;
+}
+
+}  // namespace
+
+std::vector<ColourWeave> parse_colour_weaves(const std::string& text) {
+  std::vector<ColourWeave> out;
+  size_t start = 0;
+  while (start < text.size()) {
+    const size_t end = std::min(text.find(',', start), text.size());
+    const std::string entry = text.substr(start, end - start);
+    const size_t equals = entry.find('=');
+    if (equals == std::string::npos)
+      throw InputError("{weaves}: expected RRGGBB=WEAVE, got '" + entry + "'", ErrorKind::invalid_option);
+    const std::vector<std::array<uint8_t, 3>> colour = parse_palette(entry.substr(0, equals));
+    if (colour.size() != 1)
+      throw InputError("{weaves}: expected one colour before '=', got '" + entry + "'", ErrorKind::invalid_option);
+    out.push_back({colour[0], parse_weave_pattern(entry.substr(equals + 1))});
+    start = end + 1;
+  }
+  if (out.empty()) throw InputError("{weaves}: no entries", ErrorKind::invalid_option);
+  return out;
+}
+
+LoomDesign design_of(const ColourImage& image, const std::vector<ColourWeave>& weaves, const std::string& name) {
   LoomDesign d{image.height, image.width, {}};
   d.warp_over.reserve(static_cast<size_t>(image.width) * image.height);
   for (int r = 0; r < image.height; ++r)
-    for (int c = 0; c < image.width; ++c) d.warp_over.push_back(luma(image.at(c, r)) < 0.5 ? 1 : 0);
+    for (int c = 0; c < image.width; ++c) {
+      if (weaves.empty()) {
+        d.warp_over.push_back(luma(image.at(c, r)) < 0.5 ? 1 : 0);
+        continue;
+      }
+      const std::array<uint8_t, 3> colour = bytes_of(image.at(c, r));
+      const auto it = std::find_if(weaves.begin(), weaves.end(), [&](const ColourWeave& w) { return w.colour == colour; });
+      if (it == weaves.end())
+        throw InputError(name + ": pixel (" + std::to_string(c) + ", " + std::to_string(r) + ") is " + hex(colour) +
+                             ", which {weaves} names no weave for",
+                         ErrorKind::invalid_option);
+      d.warp_over.push_back(it->pattern.over(c, -r) ? 1 : 0);
+    }
   return d;
 }
 
@@ -48,7 +99,17 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
     if (progress) progress(share);
   };
   LoomOutcome out;
-  out.design = design_of(request.design);
+  out.design = design_of(request.design, request.weaves, request.design_name);
+  YarnColours colours;
+  if (request.warp_types.width > 0 || request.weft_types.width > 0) {
+    // A yarn without a map takes grey.
+    for (int c = 0; c < out.design.columns; ++c)
+      colours.push_back(request.warp_types.width > 0 ? bytes_of(request.warp_types.at(c % request.warp_types.width, 0))
+                                                      : std::array<uint8_t, 3>{160, 160, 160});
+    for (int r = 0; r < out.design.rows; ++r)
+      colours.push_back(request.weft_types.width > 0 ? bytes_of(request.weft_types.at(0, r % request.weft_types.height))
+                                                      : std::array<uint8_t, 3>{160, 160, 160});
+  }
   std::vector<ExemplarProfiles> profiles;
   std::vector<WeavePattern> patterns;
   nlohmann::json exemplars = nlohmann::json::array();
@@ -86,11 +147,12 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
   if (!request.assignment_only) {
     size_t faces = 0, vertices = 0;
     if (request.ply_output.empty()) {
-      out.fabric = weave_fabric(out.design, out.assignment, profiles);
+      out.fabric = weave_fabric(out.design, out.assignment, profiles, colours);
       faces = out.fabric.mesh.num_faces();
       vertices = out.fabric.mesh.num_vertices();
     } else {
-      const LoomFabricFile written = write_fabric_ply(out.design, out.assignment, profiles, request.ply_output);
+      const LoomFabricFile written =
+          write_fabric_ply(out.design, out.assignment, profiles, request.ply_output, colours);
       out.fabric.grid = written.grid;
       faces = written.faces;
       vertices = written.vertices;

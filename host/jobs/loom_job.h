@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cstdint>
+
 #include "loom/block_assignment.h"
 #include "loom/loom_fabric.h"
 #include "mesh/tri_mesh.h"
@@ -18,8 +21,20 @@
 
 namespace meshquilt {
 
+//! A design colour and the elementary weave it stands for (the paper's Section 5.2).
+struct ColourWeave {
+  std::array<uint8_t, 3> colour{};
+  WeavePattern pattern;
+};
+
+//! "RRGGBB=plain,RRGGBB=twill:2/2,RRGGBB=satin:4/1,RRGGBB=FILE.pbm" (weaves as `swatch weave
+//! --pattern` reads them). \throw InputError(invalid_option) "{weaves}: ..." for a bad entry.
+std::vector<ColourWeave> parse_colour_weaves(const std::string& text);
+
 struct LoomRequest {
   ColourImage design;                      //!< one pixel a crossing; dark: the warp over the weft
+  std::vector<ColourWeave> weaves;         //!< when given, design colours name weaves instead
+  ColourImage warp_types, weft_types;      //!< yarn colours: warp c pixel (c, 0), weft r pixel (0, r)
   std::string design_name = "design";      //!< in messages and stats
   std::vector<TriMesh> exemplars;          //!< woven swatch meshes, as read
   std::vector<std::string> exemplar_names;  //!< in messages and stats
@@ -41,8 +56,11 @@ AssignmentMethod parse_assignment_method(const std::string& text);
 //!        yarns' stations, and unless streamed the mesh: 4 x stations x sides faces a crossing).
 void check_loom_request(const LoomRequest& request);
 
-//! The design read from its image: dark (grey < 0.5) where the warp lies over the weft.
-LoomDesign design_of(const ColourImage& image);
+//! The design read from its image: dark (grey < 0.5) where the warp lies over the weft; or, with
+//! `weaves`, crossing (r, c) of a pixel of colour X as X's weave reads at warp c, weft -r.
+//! \throw InputError(invalid_option) naming `name` and the pixel for a colour `weaves` lacks.
+LoomDesign design_of(const ColourImage& image, const std::vector<ColourWeave>& weaves = {},
+                     const std::string& name = "design");
 
 struct LoomOutcome {
   LoomDesign design;

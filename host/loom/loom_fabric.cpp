@@ -279,7 +279,7 @@ WovenYarns weave_yarns(const LoomDesign& design, const LoomAssignment& assignmen
 }  // namespace
 
 LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
-                        const std::vector<ExemplarProfiles>& exemplars) {
+                        const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours) {
   const WovenYarns yarns = weave_yarns(design, assignment, exemplars);
   LoomFabric out;
   out.grid = yarns.grid;
@@ -290,6 +290,7 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
     if (inward(positions, triangles)) triangles = tube_triangles(yarns.yarn(i).size(), yarns.sides, true);
     const int32_t first = static_cast<int32_t>(mesh.positions.size());
     mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
+    if (!colours.empty()) mesh.colors.resize(mesh.positions.size(), colours[i]);
     for (Tri t : triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
     mesh.elements.resize(mesh.triangles.size(), static_cast<int32_t>(i));
   }
@@ -298,7 +299,7 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
 
 LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& assignment,
                                 const std::vector<ExemplarProfiles>& exemplars, const std::filesystem::path& file,
-                                const CancelToken* cancel) {
+                                const YarnColours& colours, const CancelToken* cancel) {
   const WovenYarns yarns = weave_yarns(design, assignment, exemplars);
   LoomFabricFile out;
   out.grid = yarns.grid;
@@ -309,7 +310,8 @@ LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& 
   }
   AtomicFileStream stream(file, cancel);
   stream.write("ply\nformat binary_little_endian 1.0\ncomment written by meshquilt\nelement vertex " +
-               std::to_string(out.vertices) + "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+               std::to_string(out.vertices) + "\nproperty double x\nproperty double y\nproperty double z\n" +
+               (colours.empty() ? "" : "property uchar red\nproperty uchar green\nproperty uchar blue\n") + "element face " +
                std::to_string(out.faces) + "\nproperty list uchar int vertex_indices\nproperty int element\nend_header\n");
   // Vertices yarn by yarn, noting which tubes turn inward; then the faces, which need no positions.
   std::vector<uint8_t> flip(yarns.count(), 0);
@@ -317,8 +319,17 @@ LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& 
   for (size_t i = 0; i < yarns.count(); ++i) {
     const std::vector<Vec3> positions = yarns.positions(i);
     flip[i] = inward(positions, tube_triangles(yarns.yarn(i).size(), yarns.sides, false)) ? 1 : 0;
-    bytes.resize(positions.size() * 3 * sizeof(double));
-    std::memcpy(bytes.data(), positions.data(), bytes.size());
+    if (colours.empty()) {
+      bytes.resize(positions.size() * 3 * sizeof(double));
+      std::memcpy(bytes.data(), positions.data(), bytes.size());
+    } else {
+      const size_t stride = 3 * sizeof(double) + 3;
+      bytes.resize(positions.size() * stride);
+      for (size_t v = 0; v < positions.size(); ++v) {
+        std::memcpy(bytes.data() + v * stride, &positions[v], 3 * sizeof(double));
+        std::memcpy(bytes.data() + v * stride + 3 * sizeof(double), colours[i].data(), 3);
+      }
+    }
     stream.write(bytes);
   }
   int64_t first = 0;

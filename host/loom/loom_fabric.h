@@ -5,6 +5,8 @@
 //! solve with the seam's mean as boundary value), and each warp and weft is swept as one closed
 //! tube from one edge of the design to the other.
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -28,10 +30,14 @@ struct LoomFabric {
   LoomGrid grid;  //!< the fabric spans [0, columns pitch.x] x [0, rows pitch.y]
 };
 
+//! A colour per yarn (warps by column, then wefts by row), or none.
+using YarnColours = std::vector<std::array<uint8_t, 3>>;
+
 //! Weaves `design` as `assignment` says from `exemplars` (profiled with equal sides), at the first
-//! exemplar's pitch; other exemplars are scaled to it.
+//! exemplar's pitch; other exemplars are scaled to it. With `colours`, each yarn's vertices take
+//! its colour.
 LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
-                        const std::vector<ExemplarProfiles>& exemplars);
+                        const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours = {});
 
 //! What a streamed fabric holds.
 struct LoomFabricFile {
@@ -44,6 +50,6 @@ struct LoomFabricFile {
 //! atomically. \throw IoError(write_failed); Cancelled through `cancel`.
 LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& assignment,
                                 const std::vector<ExemplarProfiles>& exemplars, const std::filesystem::path& file,
-                                const CancelToken* cancel = nullptr);
+                                const YarnColours& colours = {}, const CancelToken* cancel = nullptr);
 
 }  // namespace meshquilt

@@ -1,0 +1,81 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "core/error.h"
+#include "jobs/loom_job.h"
+#include "mesh/mesh_io.h"
+#include "swatch/weave.h"
+
+namespace meshquilt {
+namespace {
+
+ColourImage image(int width, int height, const std::function<glm::dvec3(int, int)>& colour) {
+  ColourImage out;
+  out.width = width;
+  out.height = height;
+  for (int r = 0; r < height; ++r)
+    for (int c = 0; c < width; ++c) out.rgb.push_back(colour(c, r));
+  return out;
+}
+
+TEST(LoomJob, DesignColoursNameTheirWeaves) {
+  // Left half red, right half blue: plain and twill 2/2.
+  const ColourImage posterized =
+      image(12, 9, [](int c, int) { return c < 6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1); });
+  const std::vector<ColourWeave> weaves = parse_colour_weaves("FF0000=plain,0000ff=twill:2/2");
+  const LoomDesign d = design_of(posterized, weaves, "p.png");
+  const WeavePattern plain = twill_pattern(1, 1), twill = twill_pattern(2, 2);
+  for (int r = 0; r < d.rows; ++r)
+    for (int c = 0; c < d.columns; ++c) EXPECT_EQ(d.at(r, c), (c < 6 ? plain : twill).over(c, -r)) << r << ", " << c;
+  // A colour without a weave is refused by pixel.
+  const ColourImage stray = image(3, 3, [](int c, int r) { return c == 2 && r == 1 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0); });
+  try {
+    design_of(stray, weaves, "p.png");
+    FAIL() << "a green pixel took a weave";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("p.png: pixel (2, 1) is 00FF00"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_colour_weaves("FF0000"), InputError);
+  EXPECT_THROW(parse_colour_weaves("FF0000=tweed"), InputError);
+}
+
+TEST(LoomJob, YarnColoursFollowTheirMapsWholeOrStreamed) {
+  WeaveOptions o;
+  o.warps = o.wefts = 6;
+  LoomRequest request;
+  request.design = image(5, 4, [](int c, int r) { return (c + r) % 2 ? glm::dvec3(1.0) : glm::dvec3(0.0); });
+  request.exemplars = {make_weave(o)};
+  request.exemplar_names = {"plain"};
+  request.stations = 4;
+  request.sides = 5;
+  request.warp_types = image(2, 1, [](int c, int) { return c ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0); });
+  request.weft_types = image(1, 3, [](int, int r) { return glm::dvec3(0, 0, r / 2.0); });
+  check_loom_request(request);
+  const LoomOutcome whole = run_loom(request);
+  const TriMesh& mesh = whole.fabric.mesh;
+  ASSERT_EQ(mesh.colors.size(), mesh.num_vertices());
+  for (size_t f = 0; f < mesh.num_faces(); ++f) {
+    const int e = mesh.elements[f];
+    const std::array<uint8_t, 3> want =
+        e < 5 ? (e % 2 ? std::array<uint8_t, 3>{255, 0, 0} : std::array<uint8_t, 3>{0, 255, 0})
+              : std::array<uint8_t, 3>{0, 0, static_cast<uint8_t>(std::lround(255.0 * ((e - 5) % 3) / 2.0))};
+    EXPECT_EQ(mesh.colors[mesh.triangles[f][0]], want) << "yarn " << e;
+  }
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "meshquilt_loom_job";
+  std::filesystem::create_directories(folder);
+  write_mesh(mesh, folder / "whole.ply");
+  request.ply_output = folder / "streamed.ply";
+  run_loom(request);
+  const auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(folder / "streamed.ply"), bytes(folder / "whole.ply"));
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace meshquilt
