@@ -24,6 +24,7 @@
 #include "jobs/edit_job.h"
 #include "jobs/embed_job.h"
 #include "jobs/image_jobs.h"
+#include "jobs/loom_job.h"
 #include "jobs/synth_job.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
@@ -637,6 +638,59 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("keep_sources") = std::vector<int32_t>{}, py::arg("remove_box") = py::none(),
       py::arg("remove_sphere") = py::none(), py::arg("age") = 0.0, py::arg("seed") = 1, py::arg("color_by") = "",
       py::arg("palette") = "");
+
+  m.def(
+      "loom",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& design,
+         const std::vector<std::tuple<Array3d, Array3i, std::optional<py::array_t<int32_t>>>>& exemplars,
+         const std::string& method, uint64_t seed, int stations, int sides, const std::string& weaves,
+         std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> warp_colors,
+         std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> weft_colors,
+         bool assignment_only) {
+        const auto start = std::chrono::steady_clock::now();
+        LoomRequest request;
+        request.design = sample_image(design, "loom: design", true, 0);
+        request.method = parse_assignment_method(method);
+        request.seed = seed;
+        request.stations = stations;
+        request.sides = sides;
+        request.assignment_only = assignment_only;
+        if (!weaves.empty()) request.weaves = parse_colour_weaves(weaves);
+        if (warp_colors) request.warp_types = sample_image(*warp_colors, "loom: warp_colors", false, 0);
+        if (weft_colors) request.weft_types = sample_image(*weft_colors, "loom: weft_colors", false, 0);
+        for (size_t u = 0; u < exemplars.size(); ++u) {
+          const auto& [vertices, faces, element] = exemplars[u];
+          const std::string name = "exemplar " + std::to_string(u);
+          TriMesh mesh = mesh_from(vertices, faces, name.c_str());
+          if (element) mesh.elements.assign(element->data(), element->data() + element->size());
+          request.exemplars.push_back(std::move(mesh));
+          request.exemplar_names.push_back(name);
+        }
+        check_loom_request(request);
+        LoomOutcome outcome;
+        {
+          py::gil_scoped_release release;
+          outcome = run_loom(request);
+        }
+        nlohmann::json stats = {{"design_file", nullptr}, {"output", nullptr}};
+        stats.update(outcome.stats);
+        stats["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const LoomAssignment& a = outcome.assignment;
+        py::array_t<int32_t> blocks({a.rows, a.columns, 3});
+        int32_t* b = blocks.mutable_data();
+        for (const LoomBlock& block : a.blocks) {
+          *b++ = block.exemplar;
+          *b++ = block.x;
+          *b++ = block.y;
+        }
+        py::dict out = assignment_only ? py::dict() : dict_of(outcome.fabric.mesh);
+        out["stats"] = json_to_python(stats);
+        out["assignment"] = blocks;
+        return out;
+      },
+      py::arg("design"), py::arg("exemplars"), py::arg("method") = "structured", py::arg("seed") = 1,
+      py::arg("stations") = 8, py::arg("sides") = 8, py::arg("weaves") = "", py::arg("warp_colors") = py::none(),
+      py::arg("weft_colors") = py::none(), py::arg("assignment_only") = false);
 
   m.def("swatch_kinds", [] {
     py::list kinds;

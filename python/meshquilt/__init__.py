@@ -20,7 +20,7 @@ from . import _meshquilt
 from ._meshquilt import CancelToken, Cancelled, Error
 
 __all__ = ["Mesh", "Result", "Animation", "CancelToken", "Cancelled", "Error", "swatch", "swatch_kinds", "synth", "guidance", "paint", "relief",
-           "vine_frames",
+           "vine_frames", "loom",
            "animate",
            "inspect", "render", "edit", "read", "write", "embed"]
 
@@ -45,6 +45,7 @@ class Result(Mesh):
     stats: Dict[str, Any] = field(default_factory=dict)
     texture: Optional[bytes] = None  # with keep_texture over a base: the layer in texture space (.mqt bytes)
     heights: Optional[np.ndarray] = None  # relief: (N,) each vertex's displacement along the base's smooth normal
+    assignment: Optional[np.ndarray] = None  # loom: (H, W, 3) exemplar, warp, weft of each crossing's block
 
 
 MeshLike = Union[Mesh, Tuple[Any, Any]]
@@ -217,6 +218,37 @@ def animate(result: Mesh, swatch_rest: Any, swatch_frames: Sequence[Any],
     d = _meshquilt.animate(vertices, faces, np.ascontiguousarray(result.element, np.int32),
                            np.ascontiguousarray(result.origin, np.int32), rest, frames, keep_all)
     return Animation(list(d["frames"]), np.asarray(d["dropped"], dtype=np.int32), d["stats"])
+
+
+def loom(design: Any, exemplars: Sequence[MeshLike], *, method: str = "structured", seed: int = 1,
+         stations: int = 8, sides: int = 8, weaves: str = "", warp_colors: Any = None, weft_colors: Any = None,
+         assignment_only: bool = False) -> Result:
+    """Weaves a design from woven exemplar meshes as `meshquilt loom` does (Zhao et al. 2012).
+    `design`: an (H, W) bool array (True where the warp, column c, lies over the weft, row r), or
+    an image as paint takes one ((H, W) grey or (H, W, 3) colours in [0, 1]; dark where the warp
+    lies over), row 0 at the top; with `weaves` ("RRGGBB=plain,RRGGBB=twill:2/2,...") its
+    colours name weaves. `warp_colors` / `weft_colors`: (1, N, 3) / (M, 1, 3) images colouring
+    the yarns. Returns the fabric (warp c is element c, weft r element W + r; `colors` with
+    yarn colours) with `stats` (`loom --stats`'s keys) and `assignment`, an (H, W, 3) int array
+    of each crossing's block: exemplar, warp, weft. With assignment_only the mesh is empty."""
+    image = np.asarray(design)
+    if image.dtype == np.bool_:
+        image = np.where(image, 0.0, 1.0)
+    meshes = []
+    for k, mesh in enumerate(exemplars):
+        vertices, faces = _arrays(mesh, "exemplar %d" % k)
+        element = getattr(mesh, "element", None)
+        meshes.append((vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32)))
+    colours = [None if c is None else np.ascontiguousarray(c, dtype=np.float64) for c in (warp_colors, weft_colors)]
+    d = _meshquilt.loom(np.ascontiguousarray(image, dtype=np.float64), meshes, method, seed, stations, sides, weaves,
+                        colours[0], colours[1], assignment_only)
+    if assignment_only:
+        empty = Result(vertices=np.zeros((0, 3)), faces=np.zeros((0, 3), np.int32), stats=d["stats"])
+        empty.assignment = d["assignment"]
+        return empty
+    result = _mesh(d, Result, stats=d["stats"])
+    result.assignment = d["assignment"]
+    return result
 
 
 def inspect(mesh: MeshLike) -> Dict[str, Any]:

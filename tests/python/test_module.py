@@ -541,3 +541,31 @@ def test_embed_gives_the_result_back_and_follows_a_moved_base():
     assert stretched.vertices[:, 0].max() > 1.3 * result.vertices[:, 0].max()
     with pytest.raises(meshquilt.Error, match="base"):
         meshquilt.embed(result.texture, (base[0][:-1], base[1][:-1]))
+
+
+def test_loom_equals_the_command_line(tmp_path):
+    twill = meshquilt.swatch("weave", pattern="twill:2/2", warps=8, wefts=8)
+    plain = meshquilt.swatch("weave", pattern="plain", warps=6, wefts=6)
+    r, c = np.meshgrid(np.arange(10), np.arange(12), indexing="ij")
+    warp_over = np.where(c < 6, (c + r) % 2 == 0, (c + r) % 4 < 2)
+    result = meshquilt.loom(warp_over, [plain, twill], stations=4, sides=6)
+    meshquilt.write(twill, str(tmp_path / "twill.ply"))
+    meshquilt.write(plain, str(tmp_path / "plain.ply"))
+    with open(tmp_path / "d.pbm", "w") as f:
+        f.write("P1\n12 10\n" + "\n".join("".join("1" if v else "0" for v in row) for row in warp_over) + "\n")
+    subprocess.run([CLI, "loom", "--design", str(tmp_path / "d.pbm"), "--exemplar", str(tmp_path / "plain.ply"),
+                    "--exemplar", str(tmp_path / "twill.ply"), "--stations", "4", "--sides", "6", "-o",
+                    str(tmp_path / "f.ply"), "--stats", str(tmp_path / "s.json"), "--progress", "none"], check=True,
+                   capture_output=True)
+    back = meshquilt.read(str(tmp_path / "f.ply"))
+    assert np.array_equal(back.vertices, result.vertices) and np.array_equal(back.faces, result.faces)
+    assert np.array_equal(back.element, result.element)
+    with open(tmp_path / "s.json") as f:
+        cli_stats = json.load(f)
+    assert set(result.stats) == set(cli_stats)
+    assert result.stats["loom"]["assignment"] == cli_stats["loom"]["assignment"]
+    assert result.assignment.shape == (10, 12, 3)
+    only = meshquilt.loom(warp_over, [plain, twill], assignment_only=True)
+    assert np.array_equal(only.assignment, result.assignment) and len(only.faces) == 0
+    with pytest.raises(meshquilt.Error, match="exemplar 0"):
+        meshquilt.loom(warp_over, [meshquilt.swatch("chainmail", preset="small")])
