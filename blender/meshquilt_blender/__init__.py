@@ -73,6 +73,22 @@ class MeshquiltSettings(bpy.types.PropertyGroup):
         name="Guide", type=bpy.types.Object, poll=lambda self, obj: obj.type in {"CURVE", "GPENCIL"},
         description="A curve or grease-pencil object whose strokes, drawn over the base, orient the "
                     "swatch; empty: the default field")
+    loom_design: bpy.props.PointerProperty(
+        name="Design", type=bpy.types.Image,
+        description="The weave design, a pixel a crossing: dark where the warp (column) lies over the weft (row)")
+    loom_exemplars: bpy.props.PointerProperty(
+        name="Exemplars", type=bpy.types.Collection,
+        description="A collection of woven swatch objects; empty: built-in plain, twill 2/2 and satin 4/1")
+    loom_method: bpy.props.EnumProperty(
+        name="Method", default="structured",
+        items=[("structured", "Structured", "most consistent blocks, then the most continuous yarns"),
+               ("greedy", "Greedy", "most consistent blocks, ties at random"),
+               ("naive", "Naive", "any block with the right yarn on top")])
+    loom_weaves: bpy.props.StringProperty(
+        name="Weaves", default="",
+        description="Read the design's colours as weaves: RRGGBB=plain,RRGGBB=twill:2/2,...; empty: dark and light")
+    loom_sides: bpy.props.IntProperty(name="Yarn sides", default=8, min=3, max=64)
+    loom_stations: bpy.props.IntProperty(name="Samples per crossing", default=8, min=2, max=64, step=2)
 
 
 def settings_of(context):
@@ -281,11 +297,12 @@ def make_job(context, base):
 
 
 def add_result_object(context, base, result, suffix="quilt", look=None, kind=None):
-    """The result as a new object beside the base, selected and active, with face attributes
-    `element` and `source`: dressed in the swatch object's UVs, materials and shading (`look`), or
-    in the built-in `kind`'s material and smooth, or else one material per source."""
+    """The result as a new object beside the base (named `suffix` alone without one), selected and
+    active, with face attributes `element` and `source`: dressed in the swatch object's UVs,
+    materials and shading (`look`), or in the built-in `kind`'s material and smooth, or else one
+    material per source."""
     vertices, faces = result["vertices"], result["faces"]
-    mesh = bpy.data.meshes.new(base.name + "_" + suffix)
+    mesh = bpy.data.meshes.new(base.name + "_" + suffix if base is not None else suffix)
     mesh.vertices.add(len(vertices))
     mesh.vertices.foreach_set("co", np.asarray(vertices, dtype=np.float64).ravel())
     mesh.loops.add(faces.size)
@@ -644,6 +661,59 @@ class MESHQUILT_OT_paint(JobOperator, bpy.types.Operator):
             return {"CANCELLED"}
         obj = add_painted_object(context, self._base, result, "relief" if self._relief else "painted")
         self.report({"INFO"}, "meshquilt: %d vertices in %s" % (len(result.vertices), obj.name))
+        return {"FINISHED"}
+
+
+def loom_exemplars(module, collection):
+    """The exemplar meshes: the collection's mesh objects, or built-in plain, twill 2/2 and 5-end
+    satin weaves."""
+    if collection is not None:
+        objects = [obj for obj in collection.all_objects if obj.type == "MESH"]
+        if objects:
+            return [mesh_arrays(obj) for obj in objects]
+    return [module.swatch("weave", pattern=p, warps=n, wefts=n)
+            for p, n in (("plain", 6), ("twill:2/2", 8), ("satin:4/1", 10))]
+
+
+class MESHQUILT_OT_loom(bpy.types.Operator):
+    """Weave the design image at yarn level from the exemplars (Zhao et al. 2012): a new fabric
+    object, each warp and weft one closed yarn"""
+    bl_idname = "meshquilt.loom"
+    bl_label = "Weave"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        s = settings_of(context)
+        if s.loom_design is None:
+            self.report({"ERROR"}, "meshquilt: choose a design image to weave")
+            return {"CANCELLED"}
+        if s.loom_design.size[0] == 0:
+            self.report({"ERROR"}, "meshquilt: Blender cannot read the image '%s' (%s); use PNG"
+                        % (s.loom_design.name, s.loom_design.filepath or "no file"))
+            return {"CANCELLED"}
+        module = module_or_report(self, context, "weaving")
+        if module is None:
+            return {"CANCELLED"}
+        try:
+            result = module.loom(image_array(s.loom_design), loom_exemplars(module, s.loom_exemplars),
+                                 method=s.loom_method, seed=s.seed, stations=s.loom_stations - s.loom_stations % 2,
+                                 sides=s.loom_sides, weaves=s.loom_weaves)
+        except module.Error as error:
+            self.report({"ERROR"}, "meshquilt: %s" % error)
+            return {"CANCELLED"}
+        obj = add_result_object(context, None, {"vertices": result.vertices, "faces": result.faces,
+                                                "element": result.element}, "fabric", kind="weave")
+        obj.location = context.scene.cursor.location
+        if result.colors is not None:
+            mesh = obj.data
+            colours = np.ones((len(result.vertices), 4))
+            colours[:, :3] = srgb_to_linear(result.colors / 255.0)
+            mesh.color_attributes.new("meshquilt_colour", "BYTE_COLOR", "POINT").data.foreach_set(
+                "color", colours.ravel())
+        scores = result.stats["loom"]["assignment"]
+        self.report({"INFO"}, "meshquilt: %s: %d yarns, %.0f%% of crossings consistent, %.0f%% continuous"
+                    % (obj.name, result.stats["loom"]["elements"], 100 * scores["consistent"],
+                       100 * scores["continuous"]))
         return {"FINISHED"}
 
 
@@ -1040,11 +1110,27 @@ class VIEW3D_PT_meshquilt_paint(MeshquiltSubPanel, bpy.types.Panel):
         layout.operator(MESHQUILT_OT_paint.bl_idname)
 
 
+class VIEW3D_PT_meshquilt_loom(MeshquiltSubPanel, bpy.types.Panel):
+    bl_label = "Loom"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        s, layout = settings_of(context), self.layout
+        layout.template_ID(s, "loom_design", open="image.open")
+        layout.use_property_split = True
+        layout.prop(s, "loom_exemplars")
+        layout.prop(s, "loom_method")
+        layout.prop(s, "loom_weaves")
+        layout.prop(s, "loom_sides")
+        layout.prop(s, "loom_stations")
+        layout.operator(MESHQUILT_OT_loom.bl_idname)
+
+
 classes = (MeshquiltPreferences, MeshquiltSettings, MESHQUILT_OT_create, MESHQUILT_OT_update, MESHQUILT_OT_recall,
            MESHQUILT_OT_select, MESHQUILT_OT_follow_base, MESHQUILT_OT_preview_field, MESHQUILT_OT_animate,
            MESHQUILT_OT_sample_scene, MESHQUILT_OT_follow_frames, MESHQUILT_OT_paint, VIEW3D_PT_meshquilt,
            VIEW3D_PT_meshquilt_swatch, VIEW3D_PT_meshquilt_placement, VIEW3D_PT_meshquilt_field,
-           VIEW3D_PT_meshquilt_result, VIEW3D_PT_meshquilt_paint)
+           VIEW3D_PT_meshquilt_result, VIEW3D_PT_meshquilt_paint, MESHQUILT_OT_loom, VIEW3D_PT_meshquilt_loom)
 
 
 def register():
