@@ -29,7 +29,7 @@ struct LoomArgs {
   std::vector<std::string> exemplars;
   uint64_t seed = 1;
   int stations = 8, sides = 8;
-  bool assignment_only = false;
+  bool assignment_only = false, periodic = false;
 };
 
 void run_loom_command(const LoomArgs& args) {
@@ -40,6 +40,7 @@ void run_loom_command(const LoomArgs& args) {
   request.stations = args.stations;
   request.sides = args.sides;
   request.assignment_only = args.assignment_only;
+  request.periodic = args.periodic;
   if (!args.assignment_only) check_mesh_output(args.output);
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
@@ -112,6 +113,8 @@ void add_loom_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "seed of the choices among equals and the shifts")->capture_default_str();
   cmd->add_option("--stations", args->stations, "samples along a yarn per crossing (even)")->capture_default_str();
   cmd->add_option("--sides", args->sides, "vertices around each yarn")->capture_default_str();
+  cmd->add_flag("--periodic", args->periodic,
+                "the design is one repeat: its edges wrap round, so the fabric is a swatch for synth over a base");
   cmd->add_flag("--assignment-only", args->assignment_only,
                 "write the assignment (rows columns, then per crossing: exemplar warp weft) and no geometry");
   cmd->add_option("--picture", args->picture, "a PNG of which exemplar each crossing copies (a hue each)");

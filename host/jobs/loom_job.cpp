@@ -131,8 +131,9 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
   AssignmentOptions options;
   options.method = request.method;
   options.seed = request.seed;
+  options.periodic = request.periodic;
   out.assignment = assign_blocks(out.design, patterns, options);
-  const AssignmentScores scores = score_assignment(out.design, patterns, out.assignment);
+  const AssignmentScores scores = score_assignment(out.design, patterns, out.assignment, request.periodic);
   report(0.3);
   nlohmann::json stats = {{"design", {{"rows", out.design.rows}, {"columns", out.design.columns}}},
                           {"exemplars", exemplars},
@@ -147,12 +148,12 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
   if (!request.assignment_only) {
     size_t faces = 0, vertices = 0;
     if (request.ply_output.empty()) {
-      out.fabric = weave_fabric(out.design, out.assignment, profiles, colours);
+      out.fabric = weave_fabric(out.design, out.assignment, profiles, colours, request.periodic);
       faces = out.fabric.mesh.num_faces();
       vertices = out.fabric.mesh.num_vertices();
     } else {
       const LoomFabricFile written =
-          write_fabric_ply(out.design, out.assignment, profiles, request.ply_output, colours);
+          write_fabric_ply(out.design, out.assignment, profiles, request.ply_output, colours, request.periodic);
       out.fabric.grid = written.grid;
       faces = written.faces;
       vertices = written.vertices;
@@ -163,6 +164,7 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                      {"column_step", {g.column_step.x, g.column_step.y}},
                      {"rows", g.rows},
                      {"columns", g.columns}};
+    stats["periodic"] = request.periodic;
     stats["faces"] = faces;
     stats["vertices"] = vertices;
     stats["elements"] = g.rows + g.columns;

@@ -43,6 +43,7 @@ struct LoomRequest {
   int stations = 8;  //!< samples along a yarn per pitch
   int sides = 8;     //!< vertices around a yarn
   bool assignment_only = false;  //!< assign blocks, weave nothing
+  bool periodic = false;         //!< the design is one repeat: its copies continue each other
   //! When set, the fabric is written there as binary PLY yarn by yarn (write_fabric_ply) instead
   //! of returned: for fabrics too large to hold.
   std::filesystem::path ply_output;

@@ -33,11 +33,15 @@ int block_code(const WeavePattern& p, int x, int y) {
   return code;
 }
 
-// The design's code at (r, c) and which neighbours it has.
-std::pair<int, int> design_code(const LoomDesign& d, int r, int c) {
+// The design's code at (r, c) and which neighbours it has (all four, wrapping, when periodic).
+std::pair<int, int> design_code(const LoomDesign& d, int r, int c, bool periodic) {
   int code = d.at(r, c) ? 1 : 0, mask = 0;
   for (int k = 0; k < 4; ++k) {
-    const int rr = r + kDr[k], cc = c + kDc[k];
+    int rr = r + kDr[k], cc = c + kDc[k];
+    if (periodic) {
+      rr = (rr + d.rows) % d.rows;
+      cc = (cc + d.columns) % d.columns;
+    }
     if (rr < 0 || rr >= d.rows || cc < 0 || cc >= d.columns) continue;
     mask |= 1 << k;
     if (d.at(rr, cc)) code |= 2 << k;
@@ -139,7 +143,7 @@ LoomAssignment assign_blocks(const LoomDesign& design, const std::vector<WeavePa
   out.columns = design.columns;
   out.blocks.resize(static_cast<size_t>(design.rows) * design.columns);
   const auto list_at = [&](int r, int c) -> const std::vector<int32_t>& {
-    const auto [code, mask] = design_code(design, r, c);
+    const auto [code, mask] = design_code(design, r, c, options.periodic);
     return options.method == AssignmentMethod::naive ? cand.correct[code & 1] : cand.best[code + 32 * mask];
   };
   const auto none = [](size_t) { return 0L; };
@@ -235,7 +239,7 @@ LoomAssignment assign_blocks(const LoomDesign& design, const std::vector<WeavePa
 }
 
 AssignmentScores score_assignment(const LoomDesign& design, const std::vector<WeavePattern>& exemplars,
-                                  const LoomAssignment& a) {
+                                  const LoomAssignment& a, bool periodic) {
   AssignmentScores s;
   long correct = 0, consistent = 0, pairs = 0, continuing = 0, warp_pairs = 0, warp_continuing = 0;
   for (int r = 0; r < design.rows; ++r)
@@ -245,7 +249,11 @@ AssignmentScores score_assignment(const LoomDesign& design, const std::vector<We
       correct += p.over(b.x, b.y) == design.at(r, c);
       bool agree = true;
       for (int k = 0; k < 4; ++k) {
-        const int rr = r + kDr[k], cc = c + kDc[k];
+        int rr = r + kDr[k], cc = c + kDc[k];
+        if (periodic) {
+          rr = (rr + design.rows) % design.rows;
+          cc = (cc + design.columns) % design.columns;
+        }
         if (rr < 0 || rr >= design.rows || cc < 0 || cc >= design.columns) continue;
         agree = agree && p.over(b.x + kDc[k], b.y - kDr[k]) == design.at(rr, cc);
         if (k == 1 || k == 3) {  // each pair once: down and right

@@ -37,6 +37,7 @@ struct AssignmentOptions {
   AssignmentMethod method = AssignmentMethod::structured;
   uint64_t seed = 1;
   int shift_block = 3;  //!< side of the design blocks shifted together (the paper's m-hat)
+  bool periodic = false;  //!< the design repeats: its edges' neighbours wrap around
 };
 
 struct LoomAssignment {
@@ -60,7 +61,8 @@ struct AssignmentScores {
   double continuous_along_warps = 0.0;  //!< the same over pairs along a warp (r, r + 1)
 };
 
+//! With `periodic`, the design's edges have their wrapped neighbours.
 AssignmentScores score_assignment(const LoomDesign& design, const std::vector<WeavePattern>& exemplars,
-                                  const LoomAssignment& assignment);
+                                  const LoomAssignment& assignment, bool periodic = false);
 
 }  // namespace meshquilt

@@ -43,18 +43,20 @@ void add(Station& a, const Station& d, double w) {
 }
 
 // Blocks' pieces of one yarn, in order along it, each per_pitch + 1 stations; seams closed at the
-// mean of the two ends, each piece moved linearly between its two ends' corrections; joined.
-std::vector<Station> join_pieces(std::vector<std::vector<Station>>& pieces) {
+// mean of the two ends, each piece moved linearly between its two ends' corrections; joined. When
+// `periodic`, the yarn's two ends are one more seam.
+std::vector<Station> join_pieces(std::vector<std::vector<Station>>& pieces, bool periodic) {
   const size_t n = pieces.size();
   std::vector<Station> seam(n + 1);  // correction targets: seam k lies between piece k - 1 and k
   for (size_t k = 1; k < n; ++k) seam[k] = lerp(pieces[k - 1].back(), pieces[k].front(), 0.5);
+  if (periodic) seam[0] = seam[n] = lerp(pieces[n - 1].back(), pieces[0].front(), 0.5);
   std::vector<Station> yarn;
   for (size_t k = 0; k < n; ++k) {
     std::vector<Station>& piece = pieces[k];
     const size_t last = piece.size() - 1;
     const Station zero = difference(piece.front(), piece.front());
-    const Station top = k > 0 ? difference(seam[k], piece.front()) : zero;
-    const Station bottom = k + 1 < n ? difference(seam[k + 1], piece.back()) : zero;
+    const Station top = k > 0 || periodic ? difference(seam[k], piece.front()) : zero;
+    const Station bottom = k + 1 < n || periodic ? difference(seam[k + 1], piece.back()) : zero;
     for (size_t j = k > 0 ? 1 : 0; j <= last; ++j) {
       const double w = static_cast<double>(j) / static_cast<double>(last);
       Station s = piece[j];
@@ -120,13 +122,22 @@ bool inward(const std::vector<Vec3>& positions, const std::vector<Tri>& triangle
 // height at that distance from its centre; the upper yarn is raised and the lower one lowered by
 // half of it each, over a raised-cosine bump a pitch to either side, until none is short.
 void separate_crossings(std::vector<std::vector<Station>>& warps, std::vector<std::vector<Station>>& wefts, int pp,
-                        int sides, double warp_step, double weft_step) {
+                        int sides, double warp_step, double weft_step, bool periodic) {
   const int rows = static_cast<int>(wefts.size()), columns = static_cast<int>(warps.size());
   const size_t up_k = static_cast<size_t>(sides / 4), down_k = static_cast<size_t>(3 * sides / 4);
+  // A repeating yarn's first and last stations are one: a bump wraps round and moves both.
   const auto bump = [&](std::vector<Station>& yarn, int centre, double lift) {
+    const int period = static_cast<int>(yarn.size()) - 1;
     for (int d = -pp; d <= pp; ++d) {
-      const int s = centre + d;
-      if (s >= 0 && s < static_cast<int>(yarn.size())) yarn[s].z += lift * 0.5 * (1.0 + std::cos(kPi * d / pp));
+      const double dz = lift * 0.5 * (1.0 + std::cos(kPi * d / pp));
+      int s = centre + d;
+      if (periodic) {
+        s = ((s % period) + period) % period;
+        yarn[s].z += dz;
+        if (s == 0) yarn[period].z += dz;
+      } else if (s >= 0 && s <= period) {
+        yarn[s].z += dz;
+      }
     }
   };
   // Over the plan of a crossing, station by station of both yarns: how far the upper one's
@@ -222,7 +233,7 @@ struct WovenYarns {
 };
 
 WovenYarns weave_yarns(const LoomDesign& design, const LoomAssignment& assignment,
-                       const std::vector<ExemplarProfiles>& exemplars) {
+                       const std::vector<ExemplarProfiles>& exemplars, bool periodic) {
   WovenYarns out;
   const glm::dvec2 pitch = exemplars[0].weave.pitch;
   const int pp = exemplars[0].per_pitch, sides = exemplars[0].sides;
@@ -258,7 +269,7 @@ WovenYarns weave_yarns(const LoomDesign& design, const LoomAssignment& assignmen
       for (int j = 0; j <= pp; ++j)
         piece.push_back(station_of(p, static_cast<size_t>((b.y + 1) * pp - j), sides, scale[b.exemplar], mid_z[b.exemplar]));
     }
-    out.warps.push_back(join_pieces(pieces));
+    out.warps.push_back(join_pieces(pieces, periodic));
   }
   // Weft r runs across the design with the exemplar's x: stations x per_pitch to (x + 1) per_pitch.
   for (int r = 0; r < design.rows; ++r) {
@@ -270,17 +281,18 @@ WovenYarns weave_yarns(const LoomDesign& design, const LoomAssignment& assignmen
       for (int j = 0; j <= pp; ++j)
         piece.push_back(station_of(p, static_cast<size_t>(b.x * pp + j), sides, scale[b.exemplar], mid_z[b.exemplar]));
     }
-    out.wefts.push_back(join_pieces(pieces));
+    out.wefts.push_back(join_pieces(pieces, periodic));
   }
-  separate_crossings(out.warps, out.wefts, pp, sides, pitch.y / pp, pitch.x / pp);
+  separate_crossings(out.warps, out.wefts, pp, sides, pitch.y / pp, pitch.x / pp, periodic);
   return out;
 }
 
 }  // namespace
 
 LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
-                        const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours) {
-  const WovenYarns yarns = weave_yarns(design, assignment, exemplars);
+                        const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours,
+                        bool periodic) {
+  const WovenYarns yarns = weave_yarns(design, assignment, exemplars, periodic);
   LoomFabric out;
   out.grid = yarns.grid;
   TriMesh& mesh = out.mesh;
@@ -299,8 +311,8 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
 
 LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& assignment,
                                 const std::vector<ExemplarProfiles>& exemplars, const std::filesystem::path& file,
-                                const YarnColours& colours, const CancelToken* cancel) {
-  const WovenYarns yarns = weave_yarns(design, assignment, exemplars);
+                                const YarnColours& colours, bool periodic, const CancelToken* cancel) {
+  const WovenYarns yarns = weave_yarns(design, assignment, exemplars, periodic);
   LoomFabricFile out;
   out.grid = yarns.grid;
   const size_t sides = static_cast<size_t>(yarns.sides);

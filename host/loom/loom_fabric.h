@@ -35,9 +35,11 @@ using YarnColours = std::vector<std::array<uint8_t, 3>>;
 
 //! Weaves `design` as `assignment` says from `exemplars` (profiled with equal sides), at the first
 //! exemplar's pitch; other exemplars are scaled to it. With `colours`, each yarn's vertices take
-//! its colour.
+//! its colour. With `periodic`, the design is one repeat: each yarn ends as it starts, so copies
+//! of the fabric side by side continue each other (a swatch for synth).
 LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
-                        const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours = {});
+                        const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours = {},
+                        bool periodic = false);
 
 //! What a streamed fabric holds.
 struct LoomFabricFile {
@@ -50,6 +52,7 @@ struct LoomFabricFile {
 //! atomically. \throw IoError(write_failed); Cancelled through `cancel`.
 LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& assignment,
                                 const std::vector<ExemplarProfiles>& exemplars, const std::filesystem::path& file,
-                                const YarnColours& colours = {}, const CancelToken* cancel = nullptr);
+                                const YarnColours& colours = {}, bool periodic = false,
+                                const CancelToken* cancel = nullptr);
 
 }  // namespace meshquilt

@@ -11,6 +11,8 @@
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
 #include "spatial/intersecting_pairs.h"
+#include <glm/geometric.hpp>
+
 #include "swatch/weave.h"
 
 namespace meshquilt {
@@ -123,6 +125,37 @@ TEST(LoomFabric, ThreeRegionsFromThreeExemplarsWeaveTheDesign) {
   EXPECT_TRUE(pairs.empty()) << pairs.size() << " face pairs, the first between yarns "
                              << (pairs.empty() ? -1 : mesh.elements[pairs[0].first]) << " and "
                              << (pairs.empty() ? -1 : mesh.elements[pairs[0].second]);
+}
+
+// A repeating design's fabric continues into its copy: each yarn's last ring is its first moved
+// by the fabric's extent along its run.
+TEST(LoomFabric, ARepeatingDesignEndsEachYarnAsItStarts) {
+  LoomDesign design{8, 12, {}};
+  for (int r = 0; r < 8; ++r)
+    for (int c = 0; c < 12; ++c) design.warp_over.push_back(c < 4 ? (c + r) % 2 == 0 : (c + r) % 4 < 2);
+  const std::vector<ExemplarProfiles> ex = exemplars(4, 6);
+  std::vector<WeavePattern> patterns;
+  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
+  AssignmentOptions options;
+  options.periodic = true;
+  const LoomAssignment assignment = assign_blocks(design, patterns, options);
+  EXPECT_GE(score_assignment(design, patterns, assignment, true).correct, 1.0);
+  const LoomFabric fabric = weave_fabric(design, assignment, ex, {}, true);
+  const TriMesh& mesh = fabric.mesh;
+  const int sides = 6;
+  size_t first = 0;
+  for (int yarn = 0; yarn < design.rows + design.columns; ++yarn) {
+    const bool warp = yarn < design.columns;
+    const size_t stations = static_cast<size_t>((warp ? design.rows : design.columns) * 4 + 1);
+    const Vec3 shift = warp ? Vec3(0.0, -design.rows * 1.0, 0.0) : Vec3(design.columns * 1.0, 0.0, 0.0);
+    for (int k = 0; k < sides; ++k) {
+      const Vec3 a = mesh.positions[first + k] + shift, b = mesh.positions[first + (stations - 1) * sides + k];
+      EXPECT_LT(glm::length(a - b), 1e-9) << "yarn " << yarn << ", corner " << k;
+    }
+    first += stations * sides + 2;
+  }
+  const std::vector<FacePair> pairs = intersecting_face_pairs(mesh, mesh.elements, IntersectionScope::different_elements);
+  EXPECT_TRUE(pairs.empty()) << pairs.size() << " face pairs";
 }
 
 TEST(LoomFabric, StreamedFileEqualsTheMeshWrittenWhole) {
