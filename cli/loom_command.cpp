@@ -25,7 +25,8 @@ namespace {
 
 struct LoomArgs {
   std::string design, output, stats, picture, method = "structured", progress = "auto";
-  std::string weaves, warp_colors, weft_colors;
+  std::string weaves, warp_colors, weft_colors, base;
+  double scale = 0.8;
   std::vector<std::string> exemplars;
   uint64_t seed = 1;
   int stations = 8, sides = 8;
@@ -56,7 +57,13 @@ void run_loom_command(const LoomArgs& args) {
   }
   std::string extension = std::filesystem::path(args.output).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char ch) { return std::tolower(ch); });
-  if (!args.assignment_only && extension == ".ply") request.ply_output = args.output;  // streamed
+  if (!args.base.empty()) {
+    request.base = read_mesh(args.base);
+    request.base_name = args.base;
+    request.scale = args.scale;
+  } else if (!args.assignment_only && extension == ".ply") {
+    request.ply_output = args.output;  // streamed
+  }
   check_loom_request(request);
   ProgressReporter progress(parse_progress_mode(args.progress), "loom");
   LoomOutcome outcome = run_loom(request, [&](double share) { progress.update(share, 1.0); });
@@ -113,6 +120,10 @@ void add_loom_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "seed of the choices among equals and the shifts")->capture_default_str();
   cmd->add_option("--stations", args->stations, "samples along a yarn per crossing (even)")->capture_default_str();
   cmd->add_option("--sides", args->sides, "vertices around each yarn")->capture_default_str();
+  cmd->add_option("--base", args->base,
+                  "drape the fabric over this base, a disc (one piece, one boundary), laid out in one chart");
+  cmd->add_option("--scale", args->scale, "with --base: the fabric's longer side over the base's diagonal")
+      ->capture_default_str();
   cmd->add_flag("--periodic", args->periodic,
                 "the design is one repeat: its edges wrap round, so the fabric is a swatch for synth over a base");
   cmd->add_flag("--assignment-only", args->assignment_only,

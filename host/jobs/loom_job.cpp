@@ -10,6 +10,8 @@
 #include "edit/element_edit.h"
 #include "swatch/weave_pattern.h"
 #include "loom/exemplar_weave.h"
+#include "mesh/base_mesh.h"
+#include "surface/disc_chart.h"
 #include "loom/yarn_profile.h"
 
 namespace meshquilt {
@@ -28,6 +30,11 @@ void check_loom_request(const LoomRequest& r) {
                      ErrorKind::invalid_option);
   if (r.sides < 3 || r.sides > 64)
     throw InputError("{sides}: expected 3..64, got " + std::to_string(r.sides), ErrorKind::invalid_option);
+  if (r.base && !(r.scale > 0.0 && r.scale <= 10.0))
+    throw InputError("{scale}: expected a value in (0, 10], got " + std::to_string(r.scale), ErrorKind::invalid_option);
+  if (r.base && (r.assignment_only || !r.ply_output.empty()))
+    throw InputError("{base}: a draped fabric is woven whole; drop {assignment_only} or write another format than .ply",
+                     ErrorKind::invalid_option);
   if (r.design.width < 1 || r.design.height < 1)
     throw InputError(r.design_name + ": an empty design", ErrorKind::invalid_option);
   const double crossings = static_cast<double>(r.design.width) * r.design.height;
@@ -147,7 +154,35 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                             {"continuous_along_warps", scores.continuous_along_warps}}}};
   if (!request.assignment_only) {
     size_t faces = 0, vertices = 0;
-    if (request.ply_output.empty()) {
+    if (request.base) {
+      // Over a disc: the fabric's plane onto the base's one chart, its longer side `scale` base
+      // diagonals, centred; heights along the base's normals, the fabric's underside just above it.
+      MeshRepairs repairs;
+      const TriMesh base = prepare_base(*request.base, request.base_name, &repairs);
+      const BaseSurface surface(base);
+      const DiscChart chart = disc_chart(surface, request.base_name);
+      const glm::dvec2 pitch = profiles[0].weave.pitch;
+      const glm::dvec2 extent(out.design.columns * pitch.x, out.design.rows * pitch.y);
+      const double to_base = request.scale * surface.diagonal / std::max(extent.x, extent.y);
+      const double gap = 0.02 * to_base * std::min(pitch.x, pitch.y);
+      out.fabric = drape_fabric(
+          out.design, out.assignment, profiles,
+          [&](const Vec3& p) -> std::optional<Vec3> {
+            const std::optional<SurfacePoint> at = chart.patch.locate((glm::dvec2(p) - 0.5 * extent) * to_base);
+            if (!at) return std::nullopt;
+            return surface.position(*at) + surface.normal(*at) * (p.z * to_base + gap);
+          },
+          colours, request.periodic);
+      faces = out.fabric.mesh.num_faces();
+      vertices = out.fabric.mesh.num_vertices();
+      int32_t pieces = 0;
+      for (int32_t e : out.fabric.mesh.elements) pieces = std::max(pieces, e + 1);
+      stats["drape"] = {{"base", request.base_name},
+                        {"scale", request.scale},
+                        {"area_distortion", chart.area_distortion},
+                        {"base_units_per_pitch", to_base * pitch.x},
+                        {"yarn_pieces", pieces}};
+    } else if (request.ply_output.empty()) {
       out.fabric = weave_fabric(out.design, out.assignment, profiles, colours, request.periodic);
       faces = out.fabric.mesh.num_faces();
       vertices = out.fabric.mesh.num_vertices();
@@ -167,7 +202,7 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
     stats["periodic"] = request.periodic;
     stats["faces"] = faces;
     stats["vertices"] = vertices;
-    stats["elements"] = g.rows + g.columns;
+    stats["elements"] = request.base ? stats["drape"]["yarn_pieces"].get<int>() : g.rows + g.columns;
   }
   out.stats = {{"loom", stats}};
   report(1.0);

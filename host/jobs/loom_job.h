@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,9 @@ struct LoomRequest {
   int sides = 8;     //!< vertices around a yarn
   bool assignment_only = false;  //!< assign blocks, weave nothing
   bool periodic = false;         //!< the design is one repeat: its copies continue each other
+  std::optional<TriMesh> base;   //!< a disc to drape the fabric over, as read
+  std::string base_name = "base";
+  double scale = 0.8;            //!< the fabric's longer side over the base's bounding-box diagonal
   //! When set, the fabric is written there as binary PLY yarn by yarn (write_fabric_ply) instead
   //! of returned: for fabrics too large to hold.
   std::filesystem::path ply_output;
@@ -52,7 +56,8 @@ struct LoomRequest {
 //! "naive", "greedy" or "structured". \throw InputError(invalid_option) "{method}: ..." otherwise.
 AssignmentMethod parse_assignment_method(const std::string& text);
 
-//! \throw InputError(invalid_option) naming {name}: no exemplar, stations outside 2..64 (even),
+//! \throw InputError(invalid_option) naming {name}: no exemplar, a scale outside (0, 10], a base
+//!        with ply_output or assignment_only, stations outside 2..64 (even),
 //!        sides outside 3..64; too_large when the job's estimated memory passes the budget (the
 //!        yarns' stations, and unless streamed the mesh: 4 x stations x sides faces a crossing).
 void check_loom_request(const LoomRequest& request);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "core/atomic_write.h"
@@ -305,6 +306,60 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
     if (!colours.empty()) mesh.colors.resize(mesh.positions.size(), colours[i]);
     for (Tri t : triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
     mesh.elements.resize(mesh.triangles.size(), static_cast<int32_t>(i));
+  }
+  return out;
+}
+
+LoomFabric drape_fabric(const LoomDesign& design, const LoomAssignment& assignment,
+                        const std::vector<ExemplarProfiles>& exemplars, const FabricPlacement& place,
+                        const YarnColours& colours, bool periodic) {
+  const WovenYarns yarns = weave_yarns(design, assignment, exemplars, periodic);
+  LoomFabric out;
+  out.grid = yarns.grid;
+  std::vector<std::vector<Vec3>> flat(yarns.count());
+  double underside = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < yarns.count(); ++i) {
+    flat[i] = yarns.positions(i);
+    for (const Vec3& p : flat[i]) underside = std::min(underside, p.z);
+  }
+  TriMesh& mesh = out.mesh;
+  const size_t sides = static_cast<size_t>(yarns.sides);
+  int32_t element = 0;
+  for (size_t i = 0; i < yarns.count(); ++i) {
+    // Each station whose whole ring lands on the base; runs of two or more become tubes.
+    const size_t stations = yarns.yarn(i).size();
+    std::vector<Vec3> placed(stations * sides);
+    std::vector<uint8_t> landed(stations, 1);
+    for (size_t s = 0; s < stations; ++s)
+      for (size_t k = 0; k < sides && landed[s]; ++k) {
+        const Vec3& p = flat[i][s * sides + k];
+        const std::optional<Vec3> q = place(Vec3(p.x, p.y, p.z - underside));
+        if (q)
+          placed[s * sides + k] = *q;
+        else
+          landed[s] = 0;
+      }
+    for (size_t s = 0; s < stations;) {
+      size_t end = s;
+      while (end < stations && landed[end]) ++end;
+      if (end - s >= 2) {
+        std::vector<Vec3> positions(placed.begin() + static_cast<std::ptrdiff_t>(s * sides),
+                                    placed.begin() + static_cast<std::ptrdiff_t>(end * sides));
+        for (const size_t ring : {s, end - 1}) {  // cap centres: the mean of their rings
+          Vec3 centre(0.0);
+          for (size_t k = 0; k < sides; ++k) centre += placed[ring * sides + k] / static_cast<double>(sides);
+          positions.push_back(centre);
+        }
+        std::vector<Tri> triangles = tube_triangles(end - s, yarns.sides, false);
+        if (inward(positions, triangles)) triangles = tube_triangles(end - s, yarns.sides, true);
+        const int32_t first = static_cast<int32_t>(mesh.positions.size());
+        mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
+        if (!colours.empty()) mesh.colors.resize(mesh.positions.size(), colours[i]);
+        for (Tri t : triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+        mesh.elements.resize(mesh.triangles.size(), element++);
+      }
+      s = std::max(end, s + 1);
+    }
   }
   return out;
 }

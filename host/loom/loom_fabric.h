@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -40,6 +42,16 @@ using YarnColours = std::vector<std::array<uint8_t, 3>>;
 LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignment,
                         const std::vector<ExemplarProfiles>& exemplars, const YarnColours& colours = {},
                         bool periodic = false);
+
+//! Where a point of the flat fabric goes (x, y in the fabric's plane; z above its underside), or
+//! nothing where it falls off the surface it is draped over.
+using FabricPlacement = std::function<std::optional<Vec3>(const Vec3&)>;
+
+//! weave_fabric draped by `place`: each yarn keeps the runs of stations whose rings all land,
+//! each run a closed tube of its own (elements numbered in yarn order).
+LoomFabric drape_fabric(const LoomDesign& design, const LoomAssignment& assignment,
+                        const std::vector<ExemplarProfiles>& exemplars, const FabricPlacement& place,
+                        const YarnColours& colours = {}, bool periodic = false);
 
 //! What a streamed fabric holds.
 struct LoomFabricFile {

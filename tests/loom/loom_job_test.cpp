@@ -4,9 +4,13 @@
 #include <fstream>
 #include <iterator>
 
+#include <glm/geometric.hpp>
+
 #include "core/error.h"
 #include "jobs/loom_job.h"
 #include "mesh/mesh_io.h"
+#include "mesh/topology.h"
+#include "spatial/intersecting_pairs.h"
 #include "swatch/weave.h"
 
 namespace meshquilt {
@@ -75,6 +79,70 @@ TEST(LoomJob, YarnColoursFollowTheirMapsWholeOrStreamed) {
   };
   EXPECT_EQ(bytes(folder / "streamed.ply"), bytes(folder / "whole.ply"));
   std::filesystem::remove_all(folder);
+}
+
+// A hemisphere of radius 1 (a disc), made here by rings of latitude.
+TriMesh hemisphere(int rings, int segments, bool closed) {
+  TriMesh m;
+  m.positions.push_back(Vec3(0, 0, 1));
+  const int last = closed ? 2 * rings - 1 : rings;
+  for (int i = 1; i <= last; ++i) {
+    const double polar = 0.5 * 3.14159265358979 * i / rings;
+    for (int j = 0; j < segments; ++j) {
+      const double a = 2.0 * 3.14159265358979 * j / segments;
+      m.positions.push_back(Vec3(std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar)));
+    }
+  }
+  const auto at = [segments](int ring, int j) { return 1 + (ring - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) m.triangles.push_back({0, at(1, j), at(1, j + 1)});
+  for (int i = 1; i < last; ++i)
+    for (int j = 0; j < segments; ++j) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  if (closed) {
+    m.positions.push_back(Vec3(0, 0, -1));
+    const int south = static_cast<int>(m.positions.size()) - 1;
+    for (int j = 0; j < segments; ++j) m.triangles.push_back({south, at(last, j + 1), at(last, j)});
+  }
+  return m;
+}
+
+TEST(LoomJob, AFabricDrapesOverADiscAndNotOverASphere) {
+  WeaveOptions o;
+  o.warps = o.wefts = 6;
+  LoomRequest request;
+  request.design = image(16, 16, [](int c, int r) { return (c + r) % 2 ? glm::dvec3(1.0) : glm::dvec3(0.0); });
+  request.exemplars = {make_weave(o)};
+  request.exemplar_names = {"plain"};
+  request.stations = 6;
+  request.sides = 6;
+  request.base = hemisphere(12, 32, false);
+  request.scale = 0.6;
+  check_loom_request(request);
+  const LoomOutcome draped = run_loom(request);
+  const TriMesh& mesh = draped.fabric.mesh;
+  EXPECT_TRUE(inspect_surface(mesh).closed_manifold());
+  EXPECT_EQ(draped.stats["loom"]["drape"]["yarn_pieces"].get<int>(), 32);  // every yarn lands whole
+  EXPECT_TRUE(intersecting_face_pairs(mesh, mesh.elements, IntersectionScope::different_elements).empty());
+  // On the hemisphere, just above it: no deeper than the base's facets lie inside the sphere
+  // (1 - cos of half the largest angle between rings, 0.0048), no higher than the fabric's
+  // thickness (crimp and yarns) at its scale.
+  const double per_pitch = draped.stats["loom"]["drape"]["base_units_per_pitch"].get<double>();
+  double low = 1e300, high = -1e300;
+  for (const Vec3& p : mesh.positions) {
+    low = std::min(low, glm::length(p) - 1.0);
+    high = std::max(high, glm::length(p) - 1.0);
+  }
+  EXPECT_GT(low, -0.0049);
+  EXPECT_LT(high, 1.5 * per_pitch);
+  request.base = hemisphere(12, 32, true);
+  try {
+    run_loom(request);
+    FAIL() << "a fabric draped over a closed sphere";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("drapes over a disc"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
