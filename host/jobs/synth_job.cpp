@@ -7,10 +7,12 @@
 #include <memory>
 
 #include "core/memory_budget.h"
+#include "inspect/copy_sizes.h"
 #include "mesh/base_mesh.h"
 #include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "quilt/planar_quilting.h"
+#include "quilt/quilt_swatch.h"
 #include "shell/shell_embedding.h"
 #include "spatial/near_face_grid_cache.h"
 #include "swatch/default_swatch.h"
@@ -172,6 +174,12 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
     outcome.local = std::move(quilt.local);
     outcome.stats = quilt_stats(stats);
     add_curved_stats(request, stats, shell_report, outcome.stats);
+    // How large whole copies came out against the size asked (the swatch's element at the scale).
+    const QuiltSwatch measured = prepare_swatch(inputs.swatch, synth_swatch_name(request));
+    const CopySizes sizes = copy_sizes(outcome.mesh, measured.elements,
+                                       request.scale * surface.diagonal / std::max(measured.extent.x, measured.extent.y));
+    outcome.stats["element_size"] = {
+        {"copies", sizes.copies}, {"p10", sizes.p10}, {"median", sizes.median}, {"p90", sizes.p90}};
   } else {
     PlanarQuiltOptions options;
     static_cast<QuiltOptions&>(options) = common;
