@@ -33,16 +33,23 @@ int block_code(const WeavePattern& p, int x, int y) {
   return code;
 }
 
+// Neighbour k of crossing (r, c), wrapping round the edges when periodic; false past an edge.
+bool neighbour(const LoomDesign& d, int r, int c, int k, bool periodic, int& rr, int& cc) {
+  rr = r + kDr[k];
+  cc = c + kDc[k];
+  if (periodic) {
+    rr = (rr + d.rows) % d.rows;
+    cc = (cc + d.columns) % d.columns;
+  }
+  return rr >= 0 && rr < d.rows && cc >= 0 && cc < d.columns;
+}
+
 // The design's code at (r, c) and which neighbours it has (all four, wrapping, when periodic).
 std::pair<int, int> design_code(const LoomDesign& d, int r, int c, bool periodic) {
   int code = d.at(r, c) ? 1 : 0, mask = 0;
   for (int k = 0; k < 4; ++k) {
-    int rr = r + kDr[k], cc = c + kDc[k];
-    if (periodic) {
-      rr = (rr + d.rows) % d.rows;
-      cc = (cc + d.columns) % d.columns;
-    }
-    if (rr < 0 || rr >= d.rows || cc < 0 || cc >= d.columns) continue;
+    int rr, cc;
+    if (!neighbour(d, r, c, k, periodic, rr, cc)) continue;
     mask |= 1 << k;
     if (d.at(rr, cc)) code |= 2 << k;
   }
@@ -249,12 +256,8 @@ AssignmentScores score_assignment(const LoomDesign& design, const std::vector<We
       correct += p.over(b.x, b.y) == design.at(r, c);
       bool agree = true;
       for (int k = 0; k < 4; ++k) {
-        int rr = r + kDr[k], cc = c + kDc[k];
-        if (periodic) {
-          rr = (rr + design.rows) % design.rows;
-          cc = (cc + design.columns) % design.columns;
-        }
-        if (rr < 0 || rr >= design.rows || cc < 0 || cc >= design.columns) continue;
+        int rr, cc;
+        if (!neighbour(design, r, c, k, periodic, rr, cc)) continue;
         agree = agree && p.over(b.x + kDc[k], b.y - kDr[k]) == design.at(rr, cc);
         if (k == 1 || k == 3) {  // each pair once: down and right
           const LoomBlock& n = a.at(rr, cc);

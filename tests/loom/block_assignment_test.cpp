@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "loom/block_assignment.h"
+#include "loom_designs.h"
 
 namespace meshquilt {
 namespace {
@@ -20,16 +21,6 @@ WeavePattern tiled(const WeavePattern& p, int warps, int wefts) {
 LoomDesign random_design(int rows, int columns, std::mt19937& rng) {
   LoomDesign d{rows, columns, {}};
   for (int k = 0; k < rows * columns; ++k) d.warp_over.push_back(static_cast<uint8_t>(rng() & 1));
-  return d;
-}
-
-// Three regions across the columns: plain, twill 2/2, satin 5/2 (design rows run down, so row r
-// reads the pattern's weft -r, as the exemplar blocks are copied).
-LoomDesign three_regions(int size) {
-  const WeavePattern patterns[3] = {twill_pattern(1, 1), twill_pattern(2, 2), satin_pattern(5, 2)};
-  LoomDesign d{size, size, {}};
-  for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c) d.warp_over.push_back(patterns[3 * c / size].over(c, -r) ? 1 : 0);
   return d;
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "loom/loom_fabric.h"
+#include "loom_designs.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
 #include "spatial/intersecting_pairs.h"
@@ -17,15 +18,6 @@
 
 namespace meshquilt {
 namespace {
-
-// Three regions across the columns: plain, twill 2/2, satin 5/2.
-LoomDesign three_regions(int size) {
-  const WeavePattern patterns[3] = {twill_pattern(1, 1), twill_pattern(2, 2), satin_pattern(5, 2)};
-  LoomDesign d{size, size, {}};
-  for (int r = 0; r < size; ++r)
-    for (int c = 0; c < size; ++c) d.warp_over.push_back(patterns[3 * c / size].over(c, -r) ? 1 : 0);
-  return d;
-}
 
 // Exemplars as different tools would make them: other tube sides, samples along the yarn,
 // radius and pitch.
@@ -57,6 +49,14 @@ std::vector<ExemplarProfiles> exemplars(int per_pitch, int sides) {
   return out;
 }
 
+// The patterns the exemplars were registered with, and the structured assignment from them.
+LoomAssignment assigned(const LoomDesign& design, const std::vector<ExemplarProfiles>& ex,
+                        const AssignmentOptions& options = {}) {
+  std::vector<WeavePattern> patterns;
+  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
+  return assign_blocks(design, patterns, options);
+}
+
 // Which yarn is on top at each crossing, read from the mesh: a ray cast down at the crossing
 // against the two yarns that cross there (warp c, weft r); the higher hit's element.
 std::optional<bool> warp_on_top(const TriMesh& mesh, const std::vector<std::vector<int32_t>>& faces_of,
@@ -85,9 +85,7 @@ std::optional<bool> warp_on_top(const TriMesh& mesh, const std::vector<std::vect
 TEST(LoomFabric, ThreeRegionsFromThreeExemplarsWeaveTheDesign) {
   const LoomDesign design = three_regions(32);
   const std::vector<ExemplarProfiles> ex = exemplars(8, 8);
-  std::vector<WeavePattern> patterns;
-  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
-  const LoomAssignment assignment = assign_blocks(design, patterns);
+  const LoomAssignment assignment = assigned(design, ex);
   const LoomFabric fabric = weave_fabric(design, assignment, ex);
   const TriMesh& mesh = fabric.mesh;
   ASSERT_EQ(mesh.elements.size(), mesh.num_faces());
@@ -134,11 +132,11 @@ TEST(LoomFabric, ARepeatingDesignEndsEachYarnAsItStarts) {
   for (int r = 0; r < 8; ++r)
     for (int c = 0; c < 12; ++c) design.warp_over.push_back(c < 4 ? (c + r) % 2 == 0 : (c + r) % 4 < 2);
   const std::vector<ExemplarProfiles> ex = exemplars(4, 6);
-  std::vector<WeavePattern> patterns;
-  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
   AssignmentOptions options;
   options.periodic = true;
-  const LoomAssignment assignment = assign_blocks(design, patterns, options);
+  const LoomAssignment assignment = assigned(design, ex, options);
+  std::vector<WeavePattern> patterns;
+  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
   EXPECT_GE(score_assignment(design, patterns, assignment, true).correct, 1.0);
   const LoomFabric fabric = weave_fabric(design, assignment, ex, {}, true);
   const TriMesh& mesh = fabric.mesh;
@@ -161,9 +159,7 @@ TEST(LoomFabric, ARepeatingDesignEndsEachYarnAsItStarts) {
 TEST(LoomFabric, StreamedFileEqualsTheMeshWrittenWhole) {
   const LoomDesign design = three_regions(12);
   const std::vector<ExemplarProfiles> ex = exemplars(4, 6);
-  std::vector<WeavePattern> patterns;
-  for (const ExemplarProfiles& e : ex) patterns.push_back(e.weave.pattern);
-  const LoomAssignment assignment = assign_blocks(design, patterns);
+  const LoomAssignment assignment = assigned(design, ex);
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / "meshquilt_loom_stream";
   std::filesystem::create_directories(folder);
   const LoomFabric whole = weave_fabric(design, assignment, ex);
