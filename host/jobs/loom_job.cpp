@@ -11,6 +11,7 @@
 #include "swatch/weave_pattern.h"
 #include "loom/exemplar_weave.h"
 #include "mesh/base_mesh.h"
+#include "mesh/mesh_repair.h"
 #include "surface/disc_chart.h"
 #include "loom/yarn_profile.h"
 
@@ -101,6 +102,16 @@ LoomDesign design_of(const ColourImage& image, const std::vector<ColourWeave>& w
   return d;
 }
 
+namespace {
+
+nlohmann::json repair_counts(const MeshRepairs& repairs) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, count] : repairs.counts()) out[name] = count;
+  return out;
+}
+
+}  // namespace
+
 LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double)>& progress) {
   const auto report = [&](double share) {
     if (progress) progress(share);
@@ -122,7 +133,10 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
   nlohmann::json exemplars = nlohmann::json::array();
   for (size_t u = 0; u < request.exemplars.size(); ++u) {
     const std::string& name = request.exemplar_names[u];
-    const ExemplarWeave weave = register_exemplar(request.exemplars[u], name);
+    // Exemplars as exported (triangle soups, duplicate vertices) are repaired as swatches are.
+    const RepairedMesh repaired = repair_mesh(request.exemplars[u], name);
+    const TriMesh& exemplar = repaired.mesh;
+    const ExemplarWeave weave = register_exemplar(exemplar, name);
     patterns.push_back(weave.pattern);
     exemplars.push_back({{"file", name},
                          {"warps", weave.pattern.warps},
@@ -130,9 +144,10 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                          {"pitch", {weave.pitch.x, weave.pitch.y}},
                          {"origin", {weave.origin.x, weave.origin.y}},
                          {"tilt_degrees", weave.tilt * 180.0 / kPi},
-                         {"yarn_radius", weave.yarn_radius}});
+                         {"yarn_radius", weave.yarn_radius},
+                         {"repairs", repair_counts(repaired.repairs)}});
     if (!request.assignment_only)
-      profiles.push_back(profile_exemplar(request.exemplars[u], weave, request.stations, request.sides, name));
+      profiles.push_back(profile_exemplar(exemplar, weave, request.stations, request.sides, name));
   }
   report(0.1);
   AssignmentOptions options;

@@ -81,6 +81,35 @@ TEST(LoomJob, YarnColoursFollowTheirMapsWholeOrStreamed) {
   std::filesystem::remove_all(folder);
 }
 
+// An exemplar exported as a triangle soup (every face its own corners) is welded on reading and
+// weaves the fabric its welded self does.
+TEST(LoomJob, AnExemplarAsATriangleSoupWeavesAsItsWeldedSelf) {
+  WeaveOptions o;
+  o.pattern = twill_pattern(2, 2);
+  o.warps = o.wefts = 8;
+  const TriMesh welded = make_weave(o);
+  TriMesh soup;
+  for (const Tri& t : welded.triangles) {
+    const int32_t first = static_cast<int32_t>(soup.positions.size());
+    for (int32_t v : t) soup.positions.push_back(welded.positions[v]);
+    soup.triangles.push_back({first, first + 1, first + 2});
+  }
+  LoomRequest request;
+  request.design = image(9, 7, [](int c, int r) { return (c + r) % 4 < 2 ? glm::dvec3(0.0) : glm::dvec3(1.0); });
+  request.exemplar_names = {"soup.stl"};
+  request.stations = 4;
+  request.sides = 5;
+  request.exemplars = {soup};
+  const LoomOutcome from_soup = run_loom(request);
+  EXPECT_GT(from_soup.stats["loom"]["exemplars"][0]["repairs"]["welded_vertices"].get<int64_t>(), 0);
+  request.exemplars = {welded};
+  const LoomOutcome from_welded = run_loom(request);
+  ASSERT_EQ(from_soup.fabric.mesh.num_vertices(), from_welded.fabric.mesh.num_vertices());
+  ASSERT_EQ(from_soup.fabric.mesh.triangles, from_welded.fabric.mesh.triangles);
+  for (size_t v = 0; v < from_soup.fabric.mesh.num_vertices(); ++v)
+    EXPECT_LT(glm::length(from_soup.fabric.mesh.positions[v] - from_welded.fabric.mesh.positions[v]), 1e-9);
+}
+
 // A hemisphere of radius 1 (a disc), made here by rings of latitude.
 TriMesh hemisphere(int rings, int segments, bool closed) {
   TriMesh m;
