@@ -12,6 +12,7 @@
 #include "loom/exemplar_weave.h"
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_repair.h"
+#include "mesh/swatch_frame.h"
 #include "surface/disc_chart.h"
 #include "loom/yarn_profile.h"
 
@@ -133,9 +134,10 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
   nlohmann::json exemplars = nlohmann::json::array();
   for (size_t u = 0; u < request.exemplars.size(); ++u) {
     const std::string& name = request.exemplar_names[u];
-    // Exemplars as exported (triangle soups, duplicate vertices) are repaired as swatches are.
-    const RepairedMesh repaired = repair_mesh(request.exemplars[u], name);
-    const TriMesh& exemplar = repaired.mesh;
+    // Exemplars as exported (triangle soups, y up) are repaired and framed as swatches are: the
+    // thinnest axis turned to z.
+    MeshRepairs repairs;
+    const TriMesh exemplar = orient_swatch(request.exemplars[u], name, &repairs);
     const ExemplarWeave weave = register_exemplar(exemplar, name);
     patterns.push_back(weave.pattern);
     exemplars.push_back({{"file", name},
@@ -145,7 +147,7 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                          {"origin", {weave.origin.x, weave.origin.y}},
                          {"tilt_degrees", weave.tilt * 180.0 / kPi},
                          {"yarn_radius", weave.yarn_radius},
-                         {"repairs", repair_counts(repaired.repairs)}});
+                         {"repairs", repair_counts(repairs)}});
     if (!request.assignment_only)
       profiles.push_back(profile_exemplar(exemplar, weave, request.stations, request.sides, name));
   }

@@ -81,8 +81,8 @@ TEST(LoomJob, YarnColoursFollowTheirMapsWholeOrStreamed) {
   std::filesystem::remove_all(folder);
 }
 
-// An exemplar exported as a triangle soup (every face its own corners) is welded on reading and
-// weaves the fabric its welded self does.
+// An exemplar exported as a triangle soup (every face its own corners), y up as Blender writes
+// OBJ, is welded and turned on reading and weaves the fabric its welded self does.
 TEST(LoomJob, AnExemplarAsATriangleSoupWeavesAsItsWeldedSelf) {
   WeaveOptions o;
   o.pattern = twill_pattern(2, 2);
@@ -91,7 +91,10 @@ TEST(LoomJob, AnExemplarAsATriangleSoupWeavesAsItsWeldedSelf) {
   TriMesh soup;
   for (const Tri& t : welded.triangles) {
     const int32_t first = static_cast<int32_t>(soup.positions.size());
-    for (int32_t v : t) soup.positions.push_back(welded.positions[v]);
+    for (int32_t v : t) {
+      const Vec3& p = welded.positions[v];
+      soup.positions.push_back(Vec3(p.y, p.z, p.x));  // x, y, z to z, x, y: z up becomes y up
+    }
     soup.triangles.push_back({first, first + 1, first + 2});
   }
   LoomRequest request;
