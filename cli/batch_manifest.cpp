@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "exit_codes.h"
+#include "loom_options.h"
 #include "paint_options.h"
 #include "synth_options.h"
 
@@ -189,7 +190,10 @@ JobFiles parse_job_options(const std::filesystem::path& file, int line, const st
   if (command == "relief")
     return parse_with<ReliefArgs>(file, line, command, options, output, add_relief_options, relief_input_files,
                                   relief_output_files);
-  fail(file, line, "\"command\": expected synth, paint or relief, got '" + command + "'");
+  if (command == "loom")
+    return parse_with<LoomArgs>(file, line, command, options, output, add_loom_options, loom_input_files,
+                                loom_output_files);
+  fail(file, line, "\"command\": expected synth, paint, relief or loom, got '" + command + "'");
 }
 
 BatchJob make_job(const Manifest& manifest, size_t index, const RawJob& raw) {
@@ -199,7 +203,7 @@ BatchJob make_job(const Manifest& manifest, size_t index, const RawJob& raw) {
     if (key != "command" && key != "output" && key != "options")
       fail(file, raw.line, "unknown key '" + key + "' (expected \"command\", \"output\" and \"options\")");
   if (raw.value.contains("command") && !raw.value["command"].is_string())
-    fail(file, raw.line, "\"command\": expected synth, paint or relief");
+    fail(file, raw.line, "\"command\": expected synth, paint, relief or loom");
   if (!raw.value.contains("output") || !raw.value["output"].is_string() ||
       raw.value["output"].get<std::string>().empty())
     fail(file, raw.line, "\"output\": expected the output mesh's path");

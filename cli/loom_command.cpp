@@ -17,21 +17,13 @@
 #include "core/error.h"
 #include "jobs/loom_job.h"
 #include "mesh/mesh_io.h"
+#include "loom_options.h"
 #include "progress.h"
 #include "render/png_encoding.h"
 
 namespace meshquilt::cli {
 namespace {
 
-struct LoomArgs {
-  std::string design, output, stats, picture, method = "structured", progress = "auto";
-  std::string weaves, warp_colors, weft_colors, base;
-  double scale = 0.8;
-  std::vector<std::string> exemplars;
-  uint64_t seed = 1;
-  int stations = 8, sides = 8;
-  bool assignment_only = false, periodic = false;
-};
 
 void run_loom_command(const LoomArgs& args) {
   const auto start = std::chrono::steady_clock::now();
@@ -104,33 +96,7 @@ void add_loom_command(CLI::App& app) {
   auto args = std::make_shared<LoomArgs>();
   CLI::App* cmd = app.add_subcommand(
       "loom", "Weave a design at yarn level from woven exemplars (structure-aware, Zhao et al. 2012)");
-  cmd->add_option("--design", args->design,
-                  "the weave design: an image (PNG, PBM, PGM, PPM), a pixel a crossing, dark where the warp "
-                  "(column) lies over the weft (row)")
-      ->required();
-  cmd->add_option("--weaves", args->weaves,
-                  "read the design's colours as weaves: RRGGBB=plain,RRGGBB=twill:2/2,RRGGBB=satin:4/1,RRGGBB=FILE.pbm");
-  cmd->add_option("--warp-colors", args->warp_colors,
-                  "an image whose pixel (c, 0) colours warp c (a row of yarn types; repeats)");
-  cmd->add_option("--weft-colors", args->weft_colors,
-                  "an image whose pixel (0, r) colours weft r (a column of yarn types; repeats)");
-  cmd->add_option("--exemplar", args->exemplars, "a woven swatch mesh (repeat for more)")->required();
-  cmd->add_option("-o,--output", args->output, "the fabric mesh, or with --assignment-only a text file")->required();
-  cmd->add_option("--method", args->method, "naive, greedy or structured")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "seed of the choices among equals and the shifts")->capture_default_str();
-  cmd->add_option("--stations", args->stations, "samples along a yarn per crossing (even)")->capture_default_str();
-  cmd->add_option("--sides", args->sides, "vertices around each yarn")->capture_default_str();
-  cmd->add_option("--base", args->base,
-                  "drape the fabric over this base, a disc (one piece, one boundary), laid out in one chart");
-  cmd->add_option("--scale", args->scale, "with --base: the fabric's longer side over the base's diagonal")
-      ->capture_default_str();
-  cmd->add_flag("--periodic", args->periodic,
-                "the design is one repeat: its edges wrap round, so the fabric is a swatch for synth over a base");
-  cmd->add_flag("--assignment-only", args->assignment_only,
-                "write the assignment (rows columns, then per crossing: exemplar warp weft) and no geometry");
-  cmd->add_option("--picture", args->picture, "a PNG of which exemplar each crossing copies (a hue each)");
-  cmd->add_option("--stats", args->stats, "write the assignment's scores and the crossing grid as JSON");
-  cmd->add_option("--progress", args->progress, "auto, bar, json or none")->capture_default_str();
+  add_loom_options(cmd, *args);
   cmd->callback([args] { run_loom_command(*args); });
 }
 

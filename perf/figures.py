@@ -194,8 +194,9 @@ def measure_loom(folder, options):
                               w("twill.ply"), "--exemplar", w("satin.ply"), "-o", out, "--stats", w("loom.json"),
                               "--progress", "none", *extra])
         with open(w("loom.json")) as f:
-            loom = json.load(f)["loom"]
-        values["design%d" % size] = {"seconds": seconds, "peak_mib": mib, "faces": loom.get("faces", 0),
+            summary = json.load(f)
+        loom = summary["loom"]
+        values["design%d" % size] = {"seconds": seconds, "peak_mib": mib, "faces": summary.get("faces", 0),
                                      "consistent": loom["assignment"]["consistent"],
                                      "continuous": loom["assignment"]["continuous"],
                                      "megabytes": os.path.getsize(out) / 1e6}

@@ -712,7 +712,7 @@ class MESHQUILT_OT_loom(bpy.types.Operator):
                 "color", colours.ravel())
         scores = result.stats["loom"]["assignment"]
         self.report({"INFO"}, "meshquilt: %s: %d yarns, %.0f%% of crossings consistent, %.0f%% continuous"
-                    % (obj.name, result.stats["loom"]["elements"], 100 * scores["consistent"],
+                    % (obj.name, result.stats["elements"], 100 * scores["consistent"],
                        100 * scores["continuous"]))
         return {"FINISHED"}
 

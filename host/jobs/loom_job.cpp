@@ -217,11 +217,11 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                      {"rows", g.rows},
                      {"columns", g.columns}};
     stats["periodic"] = request.periodic;
-    stats["faces"] = faces;
-    stats["vertices"] = vertices;
-    stats["elements"] = request.base ? stats["drape"]["yarn_pieces"].get<int>() : g.rows + g.columns;
+    out.stats["faces"] = faces;
+    out.stats["vertices"] = vertices;
+    out.stats["elements"] = request.base ? stats["drape"]["yarn_pieces"].get<int>() : g.rows + g.columns;
   }
-  out.stats = {{"loom", stats}};
+  out.stats["loom"] = stats;
   report(1.0);
   return out;
 }

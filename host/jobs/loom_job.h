@@ -72,7 +72,8 @@ struct LoomOutcome {
   LoomDesign design;
   LoomAssignment assignment;
   LoomFabric fabric;    //!< empty mesh with assignment_only or ply_output
-  nlohmann::json stats;  //!< `loom --stats` less file names and seconds
+  nlohmann::json stats;  //!< `loom --stats` less file names and seconds: `loom`, and with geometry
+                         //!< `faces`, `vertices`, `elements` as synth's
 };
 
 //! Registers the exemplars, assigns blocks and (unless assignment_only) weaves the fabric.

@@ -327,7 +327,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadManifest{"unknown_command",
                     "{\"output\": \"a.ply\", \"options\": [\"--seed\", 1]}\n"
                     "{\"command\": \"colour\", \"output\": \"b.ply\"}\n",
-                    "unknown_command.jsonl:2: \"command\": expected synth, paint or relief, got 'colour'"},
+                    "unknown_command.jsonl:2: \"command\": expected synth, paint, relief or loom, got 'colour'"},
         BadManifest{"paint_without_image",
                     "{\"command\": \"paint\", \"output\": \"a.ply\", \"options\": {\"base\": \"b.off\"}}\n",
                     "paint_without_image.jsonl:1: --image is required"},
@@ -412,6 +412,31 @@ TEST(BatchCommands, PaintAndReliefJobsMatchDirectRuns) {
   EXPECT_EQ(again.exit_code, 0) << again.output;
   EXPECT_NE(again.output.find("1 done, 2 already done"), std::string::npos) << again.output;
   EXPECT_NE(again.output.find("out/painted.ply"), std::string::npos) << again.output;
+}
+
+// A loom job runs as its command does: the same bytes, its faces in the finished line, its
+// exemplars and design among the files that redo it when changed.
+TEST(BatchCommands, LoomJobsMatchDirectRuns) {
+  const fs::path dir = scratch_dir("batch_loom");
+  ASSERT_EQ(meshquilt_in(dir, "swatch weave --pattern twill:2/2 --warps 8 --wefts 8 -o twill.ply").exit_code, 0);
+  write_file(dir / "design.pbm", "P1\n6 4\n110011\n100110\n001100\n011001\n");
+  write_file(dir / "jobs.jsonl",
+             "{\"command\": \"loom\", \"output\": \"out/fabric.ply\", \"options\": {\"design\": \"design.pbm\", "
+             "\"exemplar\": \"twill.ply\", \"stations\": 4, \"sides\": 5, \"stats\": \"out/fabric.json\"}}\n");
+  const CliResult r = meshquilt_in(dir, "batch jobs.jsonl --progress none");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_EQ(meshquilt_in(dir, "loom --design design.pbm --exemplar twill.ply --stations 4 --sides 5 --progress none "
+                              "-o direct.ply").exit_code, 0);
+  EXPECT_FALSE(read_file(dir / "out/fabric.ply").empty());
+  EXPECT_TRUE(read_file(dir / "out/fabric.ply") == read_file(dir / "direct.ply")) << "loom differs";
+  EXPECT_NE(r.output.find("out/fabric.ply: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" 10 elements"), std::string::npos) << r.output;
+  EXPECT_NE(read_file(dir / "out/fabric.json").find("\"grid\""), std::string::npos);
+  EXPECT_NE(meshquilt_in(dir, "batch jobs.jsonl --progress none").output.find("0 done, 1 already done"),
+            std::string::npos);
+  write_file(dir / "design.pbm", "P1\n6 4\n110011\n100110\n001100\n011000\n");
+  EXPECT_NE(meshquilt_in(dir, "batch jobs.jsonl --progress none").output.find("1 done, 0 already done"),
+            std::string::npos);
 }
 
 TEST(BatchShard, SlurmArrayVariablesPickTheShard) {
