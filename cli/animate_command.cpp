@@ -95,7 +95,8 @@ void run_animate(const AnimateArgs& args) {
   // clean-up pass of synthesis, over time), unless --keep-all.
   const TriMesh first = frame_mesh(0);
   const MeetingElements meeting =
-      meeting_elements(first, args.keep_all ? 0 : count, [&](size_t k) { return frame_mesh(k).positions; });
+      meeting_elements(first, args.keep_all ? 0 : count,
+                       [&](size_t k) { return k == 0 ? first.positions : frame_mesh(k).positions; });
   const std::vector<int32_t>& dropped = meeting.dropped;
 
   nlohmann::json per_frame = nlohmann::json::array();

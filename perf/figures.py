@@ -174,21 +174,27 @@ def measure_quality(folder, options):
     return {"table": run([os.path.join(PERF, "quality_suite"), "--seeds", "1,2,3"], cwd=folder).strip()}
 
 
+def numpy_python():
+    """A Python of this machine with numpy (Debian's, beside a pyenv one without it)."""
+    for candidate in (sys.executable, "/usr/bin/python3"):
+        if subprocess.run([candidate, "-c", "import numpy"], capture_output=True).returncode == 0:
+            return candidate
+    sys.exit("figures: the loom group needs a Python with numpy (Debian: apt-get install python3-numpy)")
+
+
 def measure_loom(folder, options):
-    """The loom over a three-region design (tests/loom/loom_cli_test.py's) from its three exemplars:
+    """The loom over the three-region design of tests/loom/loom_design.py from three exemplars:
     the assignment of 2,048 x 2,048 crossings alone, and the fabric of 512 x 512."""
     sys.path.insert(0, os.path.join(ROOT, "tests", "loom"))
-    import loom_cli_test  # noqa: E402 (numpy)
+    from loom_design import three_regions, write_pbm  # noqa: E402
     w = lambda name: os.path.join(folder, name)
-    run([sys.executable, os.path.join(ROOT, "tests", "loom", "make_exemplar.py"), w("plain.obj"), "--tilt", "7"])
+    run([numpy_python(), os.path.join(ROOT, "tests", "loom", "make_exemplar.py"), w("plain.obj"), "--tilt", "7"])
     run([CLI, "swatch", "weave", "--pattern", "twill:2/2", "--warps", "8", "--wefts", "8", "-o", w("twill.ply")])
     run([CLI, "swatch", "weave", "--pattern", "satin:4/1", "--warps", "10", "--wefts", "10", "--sides", "6", "-o",
          w("satin.ply")])
     values = {}
     for size, extra in ((2048, ["--assignment-only"]), (512, [])):
-        pattern = loom_cli_test.design(size)
-        with open(w("design.pbm"), "w") as f:
-            f.write("P1\n%d %d\n" % (size, size) + "\n".join("".join(map(str, r)) for r in pattern) + "\n")
+        write_pbm(w("design.pbm"), three_regions(size))
         out = w("out.txt" if extra else "out.ply")
         seconds, mib = timed([CLI, "loom", "--design", w("design.pbm"), "--exemplar", w("plain.obj"), "--exemplar",
                               w("twill.ply"), "--exemplar", w("satin.ply"), "-o", out, "--stats", w("loom.json"),

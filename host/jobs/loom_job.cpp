@@ -10,8 +10,8 @@
 #include "edit/element_edit.h"
 #include "swatch/weave_pattern.h"
 #include "loom/exemplar_weave.h"
+#include "jobs/repairs_json.h"
 #include "mesh/base_mesh.h"
-#include "mesh/mesh_repair.h"
 #include "mesh/swatch_frame.h"
 #include "surface/disc_chart.h"
 #include "loom/yarn_profile.h"
@@ -103,16 +103,6 @@ LoomDesign design_of(const ColourImage& image, const std::vector<ColourWeave>& w
   return d;
 }
 
-namespace {
-
-nlohmann::json repair_counts(const MeshRepairs& repairs) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const auto& [name, count] : repairs.counts()) out[name] = count;
-  return out;
-}
-
-}  // namespace
-
 LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double)>& progress) {
   const auto report = [&](double share) {
     if (progress) progress(share);
@@ -147,7 +137,7 @@ LoomOutcome run_loom(const LoomRequest& request, const std::function<void(double
                          {"origin", {weave.origin.x, weave.origin.y}},
                          {"tilt_degrees", weave.tilt * 180.0 / kPi},
                          {"yarn_radius", weave.yarn_radius},
-                         {"repairs", repair_counts(repairs)}});
+                         {"repairs", repairs_json(repairs)}});
     if (!request.assignment_only)
       profiles.push_back(profile_exemplar(exemplar, weave, request.stations, request.sides, name));
   }

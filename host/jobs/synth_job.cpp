@@ -7,12 +7,11 @@
 #include <memory>
 
 #include "core/memory_budget.h"
-#include "inspect/copy_sizes.h"
+#include "jobs/repairs_json.h"
 #include "mesh/base_mesh.h"
 #include "mesh/measures.h"
 #include "mesh/swatch_frame.h"
 #include "quilt/planar_quilting.h"
-#include "quilt/quilt_swatch.h"
 #include "shell/shell_embedding.h"
 #include "spatial/near_face_grid_cache.h"
 #include "swatch/default_swatch.h"
@@ -55,6 +54,8 @@ void add_curved_stats(const SynthRequest& request, const SurfaceQuiltStats& stat
   out["embed"] = request.embed;
   out["intersecting_face_pairs"] = stats.intersecting_face_pairs;
   out["synthesis_map_elements"] = stats.synthesis_map_elements;
+  const CopySizes& sizes = stats.element_size;
+  out["element_size"] = {{"copies", sizes.copies}, {"p10", sizes.p10}, {"median", sizes.median}, {"p90", sizes.p90}};
   if (request.embed == "shell") {
     out["stretch_l2_initial"] = shell.stretch_initial;
     out["stretch_l2_final"] = shell.stretch_final;
@@ -80,12 +81,6 @@ void add_curved_stats(const SynthRequest& request, const SurfaceQuiltStats& stat
   out["hole_area"] = stats.hole_area;
   out["covered_area"] = stats.covered_area;
   out["field"] = request.field_name.empty() ? "default" : request.field_name;
-}
-
-nlohmann::json repairs_json(const MeshRepairs& repairs) {
-  nlohmann::json counts = nlohmann::json::object();
-  for (const auto& [name, count] : repairs.counts()) counts[name] = count;
-  return counts;
 }
 
 }  // namespace
@@ -174,12 +169,6 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
     outcome.local = std::move(quilt.local);
     outcome.stats = quilt_stats(stats);
     add_curved_stats(request, stats, shell_report, outcome.stats);
-    // How large whole copies came out against the size asked (the swatch's element at the scale).
-    const QuiltSwatch measured = prepare_swatch(inputs.swatch, synth_swatch_name(request));
-    const CopySizes sizes = copy_sizes(outcome.mesh, measured.elements,
-                                       request.scale * surface.diagonal / std::max(measured.extent.x, measured.extent.y));
-    outcome.stats["element_size"] = {
-        {"copies", sizes.copies}, {"p10", sizes.p10}, {"median", sizes.median}, {"p90", sizes.p90}};
   } else {
     PlanarQuiltOptions options;
     static_cast<QuiltOptions&>(options) = common;

@@ -109,12 +109,25 @@ std::vector<Tri> tube_triangles(size_t stations, int sides, bool flip) {
   return t;
 }
 
-// Whether the tube must be wound the other way to face outward (its enclosed volume negative).
-bool inward(const std::vector<Vec3>& positions, const std::vector<Tri>& triangles) {
+// Whether a tube (tube_positions' layout) must be wound the other way to face outward: its
+// enclosed volume is negative as tube_triangles winds it.
+bool inward(const std::vector<Vec3>& positions, int sides) {
   double volume = 0.0;
-  for (const Tri& t : triangles)
+  for (const Tri& t : tube_triangles((positions.size() - 2) / static_cast<size_t>(sides), sides, false))
     volume += glm::dot(positions[t[0]], glm::cross(positions[t[1]], positions[t[2]]));
   return volume < 0.0;
+}
+
+// A tube appended to `mesh` as element `element`, wound outward, in `colour` when given.
+void append_tube(TriMesh& mesh, const std::vector<Vec3>& positions, int sides, const std::array<uint8_t, 3>* colour,
+                 int32_t element) {
+  const size_t stations = (positions.size() - 2) / static_cast<size_t>(sides);
+  const int32_t first = static_cast<int32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
+  if (colour) mesh.colors.resize(mesh.positions.size(), *colour);
+  for (const Tri& t : tube_triangles(stations, sides, inward(positions, sides)))
+    mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+  mesh.elements.resize(mesh.triangles.size(), element);
 }
 
 // Where blocks from different exemplars, or inconsistent ones, meet, the two yarns of a crossing
@@ -298,14 +311,8 @@ LoomFabric weave_fabric(const LoomDesign& design, const LoomAssignment& assignme
   out.grid = yarns.grid;
   TriMesh& mesh = out.mesh;
   for (size_t i = 0; i < yarns.count(); ++i) {
-    const std::vector<Vec3> positions = yarns.positions(i);
-    std::vector<Tri> triangles = tube_triangles(yarns.yarn(i).size(), yarns.sides, false);
-    if (inward(positions, triangles)) triangles = tube_triangles(yarns.yarn(i).size(), yarns.sides, true);
-    const int32_t first = static_cast<int32_t>(mesh.positions.size());
-    mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
-    if (!colours.empty()) mesh.colors.resize(mesh.positions.size(), colours[i]);
-    for (Tri t : triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
-    mesh.elements.resize(mesh.triangles.size(), static_cast<int32_t>(i));
+    append_tube(mesh, yarns.positions(i), yarns.sides, colours.empty() ? nullptr : &colours[i],
+                static_cast<int32_t>(i));
   }
   return out;
 }
@@ -350,13 +357,7 @@ LoomFabric drape_fabric(const LoomDesign& design, const LoomAssignment& assignme
           for (size_t k = 0; k < sides; ++k) centre += placed[ring * sides + k] / static_cast<double>(sides);
           positions.push_back(centre);
         }
-        std::vector<Tri> triangles = tube_triangles(end - s, yarns.sides, false);
-        if (inward(positions, triangles)) triangles = tube_triangles(end - s, yarns.sides, true);
-        const int32_t first = static_cast<int32_t>(mesh.positions.size());
-        mesh.positions.insert(mesh.positions.end(), positions.begin(), positions.end());
-        if (!colours.empty()) mesh.colors.resize(mesh.positions.size(), colours[i]);
-        for (Tri t : triangles) mesh.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
-        mesh.elements.resize(mesh.triangles.size(), element++);
+        append_tube(mesh, positions, yarns.sides, colours.empty() ? nullptr : &colours[i], element++);
       }
       s = std::max(end, s + 1);
     }
@@ -385,7 +386,7 @@ LoomFabricFile write_fabric_ply(const LoomDesign& design, const LoomAssignment& 
   std::string bytes;
   for (size_t i = 0; i < yarns.count(); ++i) {
     const std::vector<Vec3> positions = yarns.positions(i);
-    flip[i] = inward(positions, tube_triangles(yarns.yarn(i).size(), yarns.sides, false)) ? 1 : 0;
+    flip[i] = inward(positions, yarns.sides) ? 1 : 0;
     if (colours.empty()) {
       bytes.resize(positions.size() * 3 * sizeof(double));
       std::memcpy(bytes.data(), positions.data(), bytes.size());

@@ -45,9 +45,9 @@ DiscChart disc_chart(const BaseSurface& base, const std::string& name) {
   double total = 0.0;
   std::vector<glm::dvec2> middles;
   std::vector<double> areas;
-  for (size_t k = 0; k < patch.faces.size(); ++k) {
-    const glm::dvec2 a = patch.uv[patch.local_vertex_of_face_[3 * k]], b = patch.uv[patch.local_vertex_of_face_[3 * k + 1]],
-                     c = patch.uv[patch.local_vertex_of_face_[3 * k + 2]];
+  for (const int32_t f : patch.faces) {
+    const glm::dvec2 a = patch.to_plane({f, glm::dvec2(0.0, 0.0)}), b = patch.to_plane({f, glm::dvec2(1.0, 0.0)}),
+                     c = patch.to_plane({f, glm::dvec2(0.0, 1.0)});
     const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
     middles.push_back((a + b + c) / 3.0);
     areas.push_back(area);

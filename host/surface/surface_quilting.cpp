@@ -1,5 +1,6 @@
 #include "surface/surface_quilting.h"
 
+#include "inspect/copy_sizes.h"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -545,6 +546,7 @@ class SurfaceDriver {
           result.mesh.positions = place_elements(*embedding_, result.local, result.mesh.triangles, result.mesh.elements).positions;
       }
     }
+    stats_.element_size = copy_sizes(result.mesh, swatch_.elements, unit_);
     return result;
   }
 

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "inspect/copy_sizes.h"
 #include "mesh/tri_mesh.h"
 #include "surface/guidance_field.h"
 #include "surface/surface_embedding.h"
@@ -60,6 +61,7 @@ struct SurfaceQuiltStats : QuiltStats {
   double hole_area = 0.0;      //!< base area of hole cells
   int intersecting_face_pairs = 0;  //!< face pairs of different elements meeting, before clean-up
   int synthesis_map_elements = 0;   //!< elements placed through the map synthesis decided on (place_elements)
+  CopySizes element_size;           //!< whole copies' size over the size asked
 };
 
 //! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field).

@@ -28,6 +28,8 @@ except ImportError:  # another Python of this machine may have it (Debian's, bes
     sys.exit(77)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from loom_design import three_regions, write_pbm  # noqa: E402
 
 
 def read_ply(path):
@@ -51,17 +53,6 @@ def read_ply(path):
     faces = np.frombuffer(data, dtype=[("n", "u1"), ("v", "<i4", 3)] + face_props, count=counts["face"], offset=offset)
     xyz = np.stack([vertices["x"], vertices["y"], vertices["z"]], -1).astype(np.float64)
     return xyz, faces["v"].astype(np.int64), faces["element"].astype(np.int64)
-
-
-def design(size):
-    """Three regions across the columns; 1 where the warp (column c) lies over the weft (row r).
-    Row r of the design reads weft -r of each pattern (rows run down, wefts up)."""
-    r, c = np.meshgrid(np.arange(size), np.arange(size), indexing="ij")
-    plain = (c + r) % 2 == 0
-    twill = (c + r) % 4 < 2
-    satin = (c + 2 * r) % 5 < 4
-    region = 3 * c // size
-    return np.where(region == 0, plain, np.where(region == 1, twill, satin)).astype(np.uint8)
 
 
 def judge(xyz, faces, element, grid, pattern):
@@ -125,10 +116,9 @@ def main():
     run(args.cli, "swatch", "weave", "--pattern", "twill:2/2", "--warps", "8", "--wefts", "8", "-o", w("twill.ply"))
     run(args.cli, "swatch", "weave", "--pattern", "satin:4/1", "--warps", "10", "--wefts", "10", "--sides", "6",
         "-o", w("satin.ply"))
-    pattern = design(args.size)
-    with open(w("design.pbm"), "w") as f:
-        f.write("P1\n%d %d\n" % (args.size, args.size))
-        f.write("\n".join("".join(map(str, row)) for row in pattern) + "\n")
+    rows = three_regions(args.size)
+    write_pbm(w("design.pbm"), rows)
+    pattern = np.array(rows, dtype=np.uint8)
     failures = []
     scores = {}
     for method in ("structured", "naive"):
