@@ -32,6 +32,7 @@ nlohmann::json quilt_stats(const QuiltStats& stats) {
       {"undone_deformations", stats.merges.undone_deformations},
       {"refused_pinned", stats.merges.refused_pinned},
       {"lattice_copies", stats.merges.lattice_copies},
+      {"filled_elements", stats.filled_elements},
       {"on_lattice", stats.on_lattice},
       {"dropped_elements", stats.dropped_elements},
       {"dropped_open", stats.dropped_open},

@@ -9,7 +9,8 @@
 namespace meshquilt {
 
 BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
-                                      bool swatch_unfolded, std::vector<uint8_t>& alive) {
+                                      bool swatch_unfolded, std::vector<uint8_t>& alive,
+                                      const FaceIntersections* known) {
   BrokenElements removed;
   std::vector<size_t> candidates;
   for (size_t i = 0; i < elements.size(); ++i)
@@ -20,18 +21,22 @@ BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& element
       ++removed.open;
     }
   }
-  std::vector<TriMesh> parts;
   std::vector<size_t> part_of;
+  std::vector<int32_t> face_part;
   for (size_t i : candidates)
     if (alive[i]) {
-      parts.push_back(*elements[i]);
+      face_part.insert(face_part.end(), elements[i]->num_faces(), static_cast<int32_t>(part_of.size()));
       part_of.push_back(i);
     }
-  const TriMesh joined = join_elements(parts);
-  const FaceIntersections found = find_intersecting_faces(joined, joined.elements);
+  const auto test = [&] {
+    std::vector<TriMesh> parts;
+    for (size_t i : part_of) parts.push_back(*elements[i]);
+    return find_intersecting_faces(join_elements(parts), face_part);
+  };
+  const FaceIntersections found = known && removed.open == 0 ? *known : test();
   if (swatch_unfolded) {
     for (const auto& [a, b] : found.same_element) {
-      const size_t i = part_of[joined.elements[a]];
+      const size_t i = part_of[face_part[a]];
       if (alive[i]) {
         alive[i] = 0;
         ++removed.folded;
@@ -41,7 +46,7 @@ BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& element
   const std::vector<FacePair>& pairs = found.different_elements;
   removed.intersecting_face_pairs = static_cast<int>(pairs.size());
   std::map<std::pair<int32_t, int32_t>, int> element_pairs;
-  for (const auto& [a, b] : pairs) ++element_pairs[std::minmax(joined.elements[a], joined.elements[b])];
+  for (const auto& [a, b] : pairs) ++element_pairs[std::minmax(face_part[a], face_part[b])];
   // Fewest drops: repeatedly remove the element that passes through the most live others (ties:
   // fewer faces, then the later one), so one bad element does not take its neighbours with it.
   std::vector<std::vector<size_t>> partners(elements.size());

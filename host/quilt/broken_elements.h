@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/tri_mesh.h"
+#include "spatial/intersecting_pairs.h"
 
 namespace meshquilt {
 
@@ -19,8 +20,11 @@ struct BrokenElements {
 //! is not a closed 2-manifold; when `swatch_unfolded`, every element two of whose faces that share
 //! no vertex meet (deformation or embedding folded it); then, while alive elements intersect (exact tests), the one that
 //! intersects the most alive others (ties: fewer faces, then the later one), so that as few
-//! elements go as possible.
+//! elements go as possible. `known`, when given, are the intersecting faces of the alive elements
+//! joined in order (as a placement that tested them last found them): used where no element is
+//! open, instead of testing again.
 BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& elements, bool swatch_closed,
-                                      bool swatch_unfolded, std::vector<uint8_t>& alive);
+                                      bool swatch_unfolded, std::vector<uint8_t>& alive,
+                                      const FaceIntersections* known = nullptr);
 
 }  // namespace meshquilt

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "mesh/topology.h"
+#include "quilt/lattice_classes.h"
 #include "quilt/lattice_copies.h"
 #include "quilt/layer_index.h"
 #include "quilt/merging/abutting_elements.h"
@@ -88,6 +89,39 @@ glm::dvec2 lattice_phase(const QuiltSwatch& swatch, const SwatchLattice& lattice
   return best;
 }
 
+// The elements of a pattern that all stand alone (lattice_classes.h), placed at every period
+// from the phase where the centre of their bounds lies in the domain, as the step would place
+// them; empty where some element does not stand alone.
+std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLattice& lattice, LatticeContacts& contacts,
+                                       const glm::dvec2& phase, const Rect2& domain, double tolerance) {
+  const std::vector<LatticeClass> classes = lattice_classes(swatch, lattice, contacts, tolerance);
+  if (!std::all_of(classes.begin(), classes.end(), [](const LatticeClass& c) { return c.alone; })) return {};
+  const std::array<glm::dvec2, 2>& b = lattice.basis;
+  std::vector<PlaneElement> layer;
+  for (const LatticeClass& cls : classes) {
+    const Rect2& bounds = swatch.element_bounds[cls.element];
+    const glm::dvec2 centre = 0.5 * (bounds.lo + bounds.hi) + phase;
+    glm::dvec2 k_lo(std::numeric_limits<double>::max()), k_hi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec2& corner : {domain.lo, domain.hi, glm::dvec2(domain.lo.x, domain.hi.y), glm::dvec2(domain.hi.x, domain.lo.y)}) {
+      const glm::dvec2 k = lattice_coordinates(corner - centre, b);
+      k_lo = glm::min(k_lo, k);
+      k_hi = glm::max(k_hi, k);
+    }
+    for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1)
+      for (double k0 = std::ceil(k_lo.x); k0 <= k_hi.x; ++k0) {
+        const glm::dvec2 t = phase + k0 * b[0] + k1 * b[1];
+        if (!domain.contains(0.5 * (bounds.lo + bounds.hi) + t)) continue;
+        PlaneElement e;
+        e.mesh = swatch.elements[cls.element];
+        for (Vec3& p : e.mesh.positions) p += Vec3(t, 0.0);
+        e.bounds = {bounds.lo + t, bounds.hi + t};
+        e.source = cls.element;
+        layer.push_back(std::move(e));
+      }
+  }
+  return layer;
+}
+
 // Over a plane a repeating swatch is placed at a period from the phase, among those within the
 // candidates' range: the best of them by matching, and as they are, since a refined placement
 // would leave the lattice.
@@ -141,6 +175,14 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   HoleTracker holes(seeds, options.seed_attempts);
   std::mt19937_64 rng(options.seed);
   std::vector<PlaneElement> layer;
+  if (lattice && options.fill_margin > 0.0) {
+    StageTimer timer(seconds, "fill");
+    layer = filled_plane(swatch, *lattice, *contacts, phase, domain, setup.step.copy_tolerance * swatch.mean_edge);
+    stats.filled_elements = static_cast<int>(layer.size());
+    // The pattern covers the plane: no patch is left to place.
+    if (!layer.empty())
+      for (int c = 0; c < total_cells; ++c) seeds.mark_processed(c);
+  }
   PatchRequest request;
   request.grid = grid;
   // A patch seeded again on a cell it could not cover also places elements centred up to a

@@ -73,12 +73,12 @@ void run_seed_loop(SeedFinder& seeds, HoleTracker& holes, const QuiltOptions& op
 
 TriMesh finish_quilt(std::vector<TriMesh>& elements, std::vector<uint8_t>& alive, const std::vector<int32_t>& sources,
                      const QuiltSetup& setup, const QuiltOptions& options, QuiltStats& stats,
-                     BrokenElements* removed_out) {
+                     BrokenElements* removed_out, const FaceIntersections* known) {
   if (options.cleanup) {
     StageTimer timer(stats.stage_seconds, "cleanup");
     std::vector<const TriMesh*> meshes;
     for (const TriMesh& m : elements) meshes.push_back(&m);
-    const BrokenElements removed = remove_broken_elements(meshes, setup.swatch.closed_elements, setup.swatch.unfolded_elements, alive);
+    const BrokenElements removed = remove_broken_elements(meshes, setup.swatch.closed_elements, setup.swatch.unfolded_elements, alive, known);
     stats.dropped_open = removed.open;
     stats.dropped_folded = removed.folded;
     stats.dropped_intersecting = removed.intersecting;

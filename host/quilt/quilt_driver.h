@@ -54,9 +54,10 @@ void run_seed_loop(SeedFinder& seeds, HoleTracker& holes, const QuiltOptions& op
 //! The end of synthesis: with options.cleanup, elements that are not closed where the swatch's
 //! are, and the smaller of two that pass through each other, are dropped from `alive`; the alive
 //! ones of `elements` (moved out) are joined in order, each face carrying its element's source.
-//! Counts the dropped elements in `stats`; `removed`, when given, gets the clean-up's report.
+//! Counts the dropped elements in `stats`; `removed`, when given, gets the clean-up's report;
+//! `known`: as remove_broken_elements takes it.
 TriMesh finish_quilt(std::vector<TriMesh>& elements, std::vector<uint8_t>& alive, const std::vector<int32_t>& sources,
                      const QuiltSetup& setup, const QuiltOptions& options, QuiltStats& stats,
-                     BrokenElements* removed = nullptr);
+                     BrokenElements* removed = nullptr, const FaceIntersections* known = nullptr);
 
 }  // namespace meshquilt

@@ -34,6 +34,11 @@ struct QuiltOptions {
   bool cleanup = true;              //!< drop elements that could not be made whole
   int max_patches = 0;              //!< stop after this many patches (0: until done); for inspection
   int seed_attempts = 3;            //!< a cell still uncovered after this many patches seeded on it is a hole
+  //! Where a repeating swatch's pattern runs unbroken, its elements that stand alone
+  //! (quilt/lattice_classes.h) are placed straight at its periods, not patch by patch: over a
+  //! plane everywhere, over a base farther than this many periods (or widest elements) from the
+  //! layout's cones and the base's border (surface/lattice_fill.h). 0 quilts every element.
+  double fill_margin = 0.5;
   MatchingOptions matching;
   PatchStepOptions step;
   std::function<void(const QuiltProgress&)> progress;  //!< optional, called after every patch
@@ -50,6 +55,7 @@ struct QuiltStats {
   int cut_swatch_elements = 0;   //!< swatch elements cut open by its border, left out (prepare_swatch)
   int dropped_intersecting = 0;  //!< the smaller of two elements that pass through each other
   int joined_elements = 0;       //!< elements joined into one they met face to face
+  int filled_elements = 0;       //!< placed straight at the pattern's periods (QuiltOptions::fill_margin)
   int cells = 0;
   double cell_size = 0.0;
   int holes = 0;                  //!< connected groups of cells left uncovered after seed_attempts patches

@@ -33,6 +33,13 @@ struct FaceIntersections {
 //!        from the BVH.
 FaceIntersections find_intersecting_faces(const TriMesh& mesh, const std::vector<int32_t>& face_element);
 
+//! find_intersecting_faces after the faces of the elements marked in `moved` (by element id) were
+//! moved: `before` was found with the faces where they were. Only pairs with a face of a moved
+//! element are tested again, among the elements whose bounds meet a moved one's. The same result
+//! as testing every face again.
+FaceIntersections find_intersecting_faces_again(const TriMesh& mesh, const std::vector<int32_t>& face_element,
+                                                const FaceIntersections& before, const std::vector<uint8_t>& moved);
+
 //! Intersecting face pairs (f, g), f < g, in lexicographic order, for one scope. Exact
 //! (Guigue-Devillers with exact predicates) over Embree's BVH-against-BVH candidate pairs,
 //! in parallel. Same preconditions and errors as find_intersecting_faces.

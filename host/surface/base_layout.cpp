@@ -99,4 +99,13 @@ LayoutWindow BaseLayout::unfold(const std::vector<int32_t>& faces, int32_t start
   return window;
 }
 
+std::vector<std::pair<int32_t, Vec3>> BaseLayout::cone_points() const {
+  std::vector<std::pair<int32_t, Vec3>> points;
+  for (int32_t v : layout_.cones) {
+    const int32_t fine_face = fine_->vertex_faces[v].empty() ? -1 : fine_->vertex_faces[v].front();
+    if (fine_face >= 0) points.emplace_back(fine_face >> (2 * levels_), fine_mesh_.positions[v]);
+  }
+  return points;
+}
+
 }  // namespace meshquilt

@@ -36,6 +36,8 @@ class BaseLayout {
   Vec3 axis(int32_t base_face) const { return layout_.axis[first_part(base_face)]; }
   int symmetry() const { return layout_.symmetry; }
   int cones() const { return static_cast<int>(layout_.cones.size()); }
+  //! Where the cones are: a base face holding each and its point in space.
+  std::vector<std::pair<int32_t, Vec3>> cone_points() const;
   int levels() const { return levels_; }           //!< times the base was split 1-to-4
   const SeamlessLayout& layout() const { return layout_; }
 

@@ -14,7 +14,7 @@ int ElementPlacement::moved_elements() const {
 
 ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::vector<LocalVertex>& vertices,
                                 const std::vector<Tri>& triangles, const std::vector<int32_t>& face_element,
-                                int rounds) {
+                                int rounds, const FaceIntersections* final_map) {
   ElementPlacement out;
   const int32_t last = face_element.empty() ? -1 : *std::max_element(face_element.begin(), face_element.end());
   out.through_synthesis_map.assign(static_cast<size_t>(last + 1), 0);
@@ -28,21 +28,27 @@ ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::ve
     std::vector<int32_t> vertex_element(vertices.size(), -1);
     for (size_t f = 0; f < triangles.size(); ++f)
       for (int32_t v : triangles[f]) vertex_element[v] = face_element[f];
+    FaceIntersections found = final_map ? *final_map : find_intersecting_faces(mesh, face_element);
+    out.final_map_intersections = found;
     for (int round = 0; round < rounds; ++round) {
       std::vector<uint8_t> moving(out.through_synthesis_map.size(), 0);
       bool any = false;
-      for (const auto& [a, b] :
-           intersecting_face_pairs(mesh, face_element, IntersectionScope::different_elements))
+      for (const auto& [a, b] : found.different_elements)
         for (const int32_t e : {face_element[a], face_element[b]})
           if (!out.through_synthesis_map[e]) {
             moving[e] = out.through_synthesis_map[e] = 1;
             any = true;
           }
-      if (!any) break;
+      if (!any) {
+        out.intersections = std::move(found);
+        break;
+      }
       tbb::parallel_for(size_t{0}, vertices.size(), [&](size_t v) {
         if (vertex_element[v] >= 0 && moving[vertex_element[v]])
           mesh.positions[v] = embedding.position_during_synthesis(vertices[v].point, vertices[v].height);
       });
+      // Only the moved elements' faces changed.
+      if (round + 1 < rounds) found = find_intersecting_faces_again(mesh, face_element, found, moving);
     }
   }
   out.positions = std::move(mesh.positions);

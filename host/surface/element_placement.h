@@ -6,9 +6,11 @@
 //! which keeps them apart; the rest through the final map.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "mesh/tri_mesh.h"
+#include "spatial/intersecting_pairs.h"
 #include "surface/surface_embedding.h"
 #include "surface/surface_quilting.h"
 
@@ -17,6 +19,11 @@ namespace meshquilt {
 struct ElementPlacement {
   std::vector<Vec3> positions;                 //!< #V
   std::vector<uint8_t> through_synthesis_map;  //!< per element: placed by position_during_synthesis
+  //! The faces that meet at `positions` (face indices as `triangles`), where the last test saw
+  //! the final positions.
+  std::optional<FaceIntersections> intersections;
+  //! The faces that meet with every element placed through the final map (the first test).
+  std::optional<FaceIntersections> final_map_intersections;
 
   //! How many elements went through the synthesis map.
   int moved_elements() const;
@@ -27,9 +34,10 @@ struct ElementPlacement {
 //! embedding has a distinct synthesis map, every element that passes through another goes through
 //! position_during_synthesis instead, repeated while that changes something (at most `rounds`
 //! times). Deterministic: the same inputs give the same positions, so `meshquilt embed` over the
-//! base a texture was made on reproduces synth.
+//! base a texture was made on reproduces synth. `final_map`, when given, is what the first test
+//! would find (final_map_intersections of a placement of more elements, less theirs).
 ElementPlacement place_elements(const SurfaceEmbedding& embedding, const std::vector<LocalVertex>& vertices,
                                 const std::vector<Tri>& triangles, const std::vector<int32_t>& face_element,
-                                int rounds = 4);
+                                int rounds = 4, const FaceIntersections* final_map = nullptr);
 
 }  // namespace meshquilt

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
 
 #include "spatial/box_grid.h"
 
@@ -50,7 +51,8 @@ SurfaceCells make_surface_cells(const BaseSurface& base, double cell_size) {
   std::unordered_map<uint64_t, std::vector<int32_t>> buckets;
   for (size_t c = 0; c < count; ++c) buckets[key(points[c])].push_back(static_cast<int32_t>(c));
   cells.neighbours.resize(count);
-  for (size_t c = 0; c < count; ++c) {
+  // Each cell's list is its own: found side by side.
+  tbb::parallel_for(size_t{0}, count, [&](size_t c) {
     const Vec3& p = points[c];
     const int64_t x = static_cast<int64_t>(std::floor(p.x / bucket)), y = static_cast<int64_t>(std::floor(p.y / bucket)),
                   z = static_cast<int64_t>(std::floor(p.z / bucket));
@@ -69,7 +71,7 @@ SurfaceCells make_surface_cells(const BaseSurface& base, double cell_size) {
     std::sort(cells.neighbours[c].begin(), cells.neighbours[c].end());
     cells.neighbours[c].erase(std::unique(cells.neighbours[c].begin(), cells.neighbours[c].end()),
                               cells.neighbours[c].end());
-  }
+  });
   return cells;
 }
 

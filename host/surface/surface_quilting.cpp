@@ -16,14 +16,17 @@
 #include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "quilt/merging/abutting_elements.h"
+#include "spatial/intersecting_pairs.h"
 #include "quilt/quilt_driver.h"
 #include "quilt/stage_timer.h"
+#include "quilt/lattice_classes.h"
 #include "quilt/lattice_copies.h"
 #include "quilt/quilt_policies.h"
 #include "quilt/swatch_lattice.h"
 #include "quilt/swatch_symmetry.h"
 #include "surface/direction_field.h"
 #include "surface/element_placement.h"
+#include "surface/lattice_fill.h"
 #include "surface/base_layout.h"
 #include "surface/surface_cells.h"
 
@@ -110,6 +113,7 @@ class SurfaceDriver {
     full_radius_ = (glm::length(swatch_.extent) + cell_) * unit_;
     if (options.shared_layout) {
       layout_ = make_layout();
+      fill_ = make_fill();
     } else {
       for (size_t f = 0; f < base_mesh.num_faces(); ++f)
         face_field_.push_back(field_.at(base_, {static_cast<int32_t>(f), glm::dvec2(1.0 / 3.0)}));
@@ -137,7 +141,98 @@ class SurfaceDriver {
     return layout;
   }
 
+  // Where the layout carries the swatch's pattern, the elements that stand alone in it, placed
+  // where nothing breaks it (a cone, a border).
+  std::unique_ptr<LatticeFill> make_fill() {
+    if (!lattice_ || !layout_->layout().on_lattice || !(options_.fill_margin > 0.0)) return nullptr;
+    StageTimer timer(seconds_, "fill");
+    std::vector<LatticeClass> classes =
+        lattice_classes(swatch_, *lattice_, *contacts_, setup_.step.copy_tolerance * swatch_.mean_edge);
+    // A cone's neighbourhood is left to the patch step: a period and the widest element around it.
+    double widest = std::max(glm::length(lattice_->basis[0]), glm::length(lattice_->basis[1]));
+    for (const LatticeClass& c : classes) {
+      const Rect2& b = swatch_.element_bounds[c.element];
+      widest = std::max(widest, glm::length(b.hi - b.lo));
+    }
+    const double margin = options_.fill_margin * widest * unit_;
+    auto fill = std::make_unique<LatticeFill>(base_, swatch_, *lattice_, std::move(classes),
+                                              distance_to_breaks(base_, layout_->cone_points()), margin, unit_, height_unit_);
+    return fill->any() ? std::move(fill) : nullptr;
+  }
+
+  // Fills the pattern window by window, from every cell no earlier window held near its middle;
+  // then keeps the elements that meet none in space and marks the cells they cover.
+  void fill_lattice() {
+    if (!fill_) return;
+    StageTimer timer(seconds_, "fill");
+    const int total_cells = static_cast<int>(cells_.centres.size());
+    std::vector<uint8_t> tried(total_cells, 0);
+    struct Record {
+      FilledWindow filled;
+      std::vector<std::pair<int32_t, glm::dvec2>> cells;  // under the window, with their plane points
+    };
+    std::vector<Record> records;
+    for (int c = 0; c < total_cells; ++c) {
+      if (tried[c]) continue;
+      tried[c] = 1;
+      // A window seeded where the pattern breaks would place little.
+      if (fill_->near_break(cells_.centres[c])) continue;
+      SurfacePatch window = grow_conformal_patch(base_, cells_.centres[c], full_radius_, nullptr, layout_.get());
+      if (window.chart != PatchChart::layout_window || window.flipped_faces > 0) continue;
+      window.transform(0.0, 1.0 / unit_);
+      window.index();
+      Record record{fill_->fill(window, window.origin + lattice_->centre), {}};
+      for (FilledElement& f : record.filled.added) {
+        SurfaceElement added;
+        added.source = f.source;
+        added.vertices = std::move(f.vertices);
+        added.origins = swatch_.elements[f.source].origins;
+        added.triangles = swatch_.elements[f.source].triangles;
+        update_bounds(added, base_);
+        elements_.push_back(std::move(added));
+        alive_.push_back(1);
+      }
+      record.filled.added.clear();
+      const double inner = 0.75 * full_radius_ / unit_;
+      for (int32_t f : window.faces)
+        for (int32_t cell = cells_.face_offsets[f]; cell < cells_.face_offsets[f + 1]; ++cell) {
+          const glm::dvec2 p = window.to_plane(cells_.centres[cell]);
+          if (glm::length(p) < inner) tried[cell] = 1;
+          record.cells.emplace_back(cell, p);
+        }
+      records.push_back(std::move(record));
+    }
+    keep_apart_in_space();
+    for (const Record& record : records)
+      for (const auto& [cell, p] : record.cells) {
+        if (seeds_.processed(cell) || !record.filled.covers(p, cell_, alive_)) continue;
+        seeds_.mark_processed(cell);
+        processed_area_ += cells_.areas[cell];
+      }
+    stats_.filled_elements = static_cast<int>(std::count(alive_.begin(), alive_.end(), 1));
+  }
+
+  // Where the shell bends the pattern, filled elements can pass through themselves or each other
+  // in space, where the step would have refused them: those are left to it.
+  void keep_apart_in_space() {
+    tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t e) { fill_in_space(elements_[e]); });
+    TriMesh joined;
+    std::vector<int32_t> face_element;
+    for (size_t e = 0; e < elements_.size(); ++e) {
+      const auto first = static_cast<int32_t>(joined.positions.size());
+      joined.positions.insert(joined.positions.end(), elements_[e].in_space.begin(), elements_[e].in_space.end());
+      for (const Tri& t : elements_[e].triangles) {
+        joined.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+        face_element.push_back(static_cast<int32_t>(e));
+      }
+    }
+    const FaceIntersections met = find_intersecting_faces(joined, face_element);
+    for (const auto* pairs : {&met.different_elements, &met.same_element})
+      for (const auto& [a, b] : *pairs) alive_[face_element[a]] = alive_[face_element[b]] = 0;
+  }
+
   SurfaceQuilt run() {
+    fill_lattice();
     SeedLoopDomain surface;
     surface.quilt_patch_at = [this](int seed_cell) { patch_at(seed_cell); };
     surface.given_up = [this](int cell) { processed_area_ += cells_.areas[cell]; };
@@ -474,8 +569,49 @@ class SurfaceDriver {
     return result;
   }
 
-  // Every alive element placed in space by the final embedding, as one batch.
-  std::vector<TriMesh> embed_elements() {
+  // Face pairs named by element and face within it.
+  struct ElementFacePairs {
+    std::vector<std::array<int32_t, 4>> different, same;  // element, face, element, face
+  };
+
+  ElementFacePairs element_pairs(const FaceIntersections& found, const std::vector<size_t>& placed) const {
+    std::vector<int32_t> element_of, local;
+    for (size_t e : placed)
+      for (size_t f = 0; f < elements_[e].triangles.size(); ++f) {
+        element_of.push_back(static_cast<int32_t>(e));
+        local.push_back(static_cast<int32_t>(f));
+      }
+    ElementFacePairs out;
+    for (const auto& [a, b] : found.different_elements) out.different.push_back({element_of[a], local[a], element_of[b], local[b]});
+    for (const auto& [a, b] : found.same_element) out.same.push_back({element_of[a], local[a], element_of[b], local[b]});
+    return out;
+  }
+
+  // The pairs among the elements still placed, as faces of their placement.
+  FaceIntersections remaining_pairs(const ElementFacePairs& pairs, const std::vector<size_t>& placed) const {
+    std::vector<int32_t> first(elements_.size(), -1);
+    int32_t next = 0;
+    for (size_t e : placed) {
+      first[e] = next;
+      next += static_cast<int32_t>(elements_[e].triangles.size());
+    }
+    const auto carry = [&](const std::vector<std::array<int32_t, 4>>& from, std::vector<FacePair>& to) {
+      for (const auto& [e, f, d, g] : from)
+        if (first[e] >= 0 && first[d] >= 0) {
+          const int32_t a = first[e] + f, b = first[d] + g;
+          to.emplace_back(std::min(a, b), std::max(a, b));
+        }
+      std::sort(to.begin(), to.end());
+    };
+    FaceIntersections out;
+    carry(pairs.different, out.different_elements);
+    carry(pairs.same, out.same_element);
+    return out;
+  }
+
+  // Every alive element placed in space by the final embedding, as one batch; `met`, the faces
+  // that meet there, where the placement tested them last.
+  std::vector<TriMesh> embed_elements(std::optional<FaceIntersections>* met = nullptr) {
     StageTimer timer(seconds_, "embed");
     std::vector<TriMesh> embedded(elements_.size());
     std::vector<LocalVertex> vertices;
@@ -492,8 +628,14 @@ class SurfaceDriver {
       }
       placed.push_back(e);
     }
-    const ElementPlacement placement = place_elements(*embedding_, vertices, triangles, face_element);
+    // Placed again with fewer elements, those left meet through the final map as they did.
+    std::optional<FaceIntersections> final_map;
+    if (final_map_met_) final_map = remaining_pairs(*final_map_met_, placed);
+    ElementPlacement placement =
+        place_elements(*embedding_, vertices, triangles, face_element, 4, final_map ? &*final_map : nullptr);
     stats_.synthesis_map_elements = placement.moved_elements();
+    if (met) *met = std::move(placement.intersections);
+    if (placement.final_map_intersections) final_map_met_ = element_pairs(*placement.final_map_intersections, placed);
     size_t next = 0;
     for (const size_t e : placed) {
       TriMesh& mesh = embedded[e];
@@ -507,12 +649,13 @@ class SurfaceDriver {
   }
 
   SurfaceQuilt finish() {
-    std::vector<TriMesh> embedded = embed_elements();
+    std::optional<FaceIntersections> met;
+    std::vector<TriMesh> embedded = embed_elements(&met);
     std::vector<int32_t> sources;
     for (const SurfaceElement& e : elements_) sources.push_back(e.source);
     BrokenElements removed;
     SurfaceQuilt result;
-    result.mesh = finish_quilt(embedded, alive_, sources, setup_, options_, stats_, &removed);
+    result.mesh = finish_quilt(embedded, alive_, sources, setup_, options_, stats_, &removed, met ? &*met : nullptr);
     if (stats_.dropped_elements > 0 && embedding_->has_synthesis_map() && stats_.synthesis_map_elements > 0) {
       // Which map an element goes through depends on the others present: place the kept ones
       // again, so that `embed` of the texture over this base gives this output back (with none
@@ -569,6 +712,8 @@ class SurfaceDriver {
   std::unique_ptr<SurfaceEmbedding> embedding_;
   std::unique_ptr<BaseLayout> layout_;
   std::unique_ptr<LatticeContacts> contacts_;  // its pattern's contacts, where it has periods
+  std::unique_ptr<LatticeFill> fill_;  // where the layout carries a pattern with elements that stand alone
+  std::optional<ElementFacePairs> final_map_met_;  // faces that met with every element through the final map
   std::optional<SwatchLattice> lattice_;  // the swatch's periods, where its pattern repeats
   std::vector<Vec3> face_field_;  // per base face, for field-aligned charts of single patches
   std::vector<SurfaceElement> elements_;

@@ -353,6 +353,42 @@ TEST_P(RealMeshPairs, MatchBruteForce) {
   expect_matches_brute_force(two, std::vector<int32_t>(two.num_faces(), 0), 0, 1);
 }
 
+// Tested again after some elements moved, only their pairs are looked at; the answer is that of
+// testing every face at the new places.
+TEST(IntersectingFaces, AgainAfterElementsMoveAsIfTestedAfresh) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> at(0.0, 8.0), size(0.5, 2.0), shift(-1.0, 1.0);
+  TriMesh m;
+  std::vector<int32_t> element;
+  for (int e = 0; e < 300; ++e) {
+    const Vec3 o(at(rng), at(rng), at(rng));
+    const int32_t first = static_cast<int32_t>(m.positions.size());
+    m.positions.insert(m.positions.end(), {o, o + Vec3(size(rng), 0, 0), o + Vec3(0, size(rng), 0), o + Vec3(0, 0, size(rng))});
+    for (const Tri& t : std::vector<Tri>{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+      m.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+      element.push_back(e);
+    }
+  }
+  FaceIntersections found = find_intersecting_faces(m, element);
+  EXPECT_GT(found.different_elements.size(), 50u);
+  for (int round = 0; round < 3; ++round) {
+    std::vector<uint8_t> moved(300, 0);
+    for (int k = 0; k < 40; ++k) {
+      const int e = static_cast<int>(rng() % 300);
+      moved[e] = 1;
+    }
+    for (int e = 0; e < 300; ++e) {
+      if (!moved[e]) continue;
+      const Vec3 d(shift(rng), shift(rng), shift(rng));
+      for (int v = 0; v < 4; ++v) m.positions[4 * e + v] += d;
+    }
+    found = find_intersecting_faces_again(m, element, found, moved);
+    const FaceIntersections fresh = find_intersecting_faces(m, element);
+    EXPECT_EQ(found.different_elements, fresh.different_elements) << "round " << round;
+    EXPECT_EQ(found.same_element, fresh.same_element) << "round " << round;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, RealMeshPairs, ::testing::Values("sphere.off", "knot.off", "plane.off", "head.off"));
 
 }  // namespace

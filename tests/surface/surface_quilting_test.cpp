@@ -259,9 +259,43 @@ TEST(SurfaceQuilting, TheDefaultMailOverTheSphereLinksAsOnAPlane) {
   EXPECT_NEAR(links.median_radius / (swatch_links.median_radius * run.unit), 1.0, 0.05);
 }
 
+// Placed straight from the layout away from the cones, the pattern's rings are the rings the
+// patch step places there: as many, linked as well (#61's bars: elements within 2%, linked to >= 3
+// within 3 points, the largest piece within 8), and most rings need no patch.
+class FilledPattern : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FilledPattern, LinksAsThePatchStepDoes) {
+  const std::string name = GetParam();
+  const auto file = name == "sphere.off" ? kSource / "data/sphere.off" : kShared / "data/meshes" / name;
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
+  const TriMesh swatch = default_swatch();
+  const double scale = name == "sphere.off" ? 0.2 : 0.14;
+  const SurfaceRun filled = run_surface(read_mesh(file), swatch, scale);
+  const SurfaceRun stepped = run_surface(read_mesh(file), swatch, scale, engine::BackendChoice::cpu, 0, {}, Embed::shell,
+                                         [](SurfaceQuiltOptions& o) { o.fill_margin = 0.0; });
+  const RingLinks a = links_of(filled.output), b = links_of(stepped.output);
+  std::printf("%s: filled %d of %d rings in %d patches, linked to >= 3 %.3f, largest %.3f; stepped %d rings in %d "
+              "patches, %.3f, %.3f\n",
+              name.c_str(), filled.stats.filled_elements, a.rings, filled.stats.patches, a.linked_to_3_share,
+              a.largest_piece_share, b.rings, stepped.stats.patches, b.linked_to_3_share, b.largest_piece_share);
+  EXPECT_EQ(stepped.stats.filled_elements, 0);
+  EXPECT_GT(filled.stats.filled_elements, a.rings / 2);
+  EXPECT_LT(filled.stats.patches, stepped.stats.patches);
+  EXPECT_NEAR(a.rings, b.rings, 0.02 * b.rings);
+  EXPECT_GE(a.linked_to_3_share, b.linked_to_3_share - 0.03);
+  EXPECT_GE(a.largest_piece_share, b.largest_piece_share - 0.08);
+  EXPECT_EQ(filled.stats.intersecting_face_pairs, 0);
+  EXPECT_LE(filled.stats.hole_area, stepped.stats.hole_area + 1e-4 * stepped.stats.covered_area);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bases, FilledPattern, ::testing::Values("sphere.off", "fertility.off"),
+                         [](const auto& info) { return std::string(info.param).substr(0, std::string(info.param).find('.')); });
+
 // Over scanned bases whose layouts hold cones of negative index (saddles between the bunny's
 // ears, fertility's handles), a window that wrapped over itself round one placed rings of one
-// sheet over those of the other, and refused them as collisions.
+// sheet over those of the other, and refused them as collisions. Rings
+// filled straight from the layout up to half a period from a cone refuse a few more there, where
+// the pattern breaks: 7% over the bunny.
 class ScannedBaseLinks : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ScannedBaseLinks, TheDefaultMailLinksAsOnAPlane) {
@@ -276,7 +310,7 @@ TEST_P(ScannedBaseLinks, TheDefaultMailLinksAsOnAPlane) {
               run.stats.merges.rejected_inputs);
   EXPECT_GE(links.linked_to_3_share, 0.85);
   EXPECT_GE(links.largest_piece_share, 0.95);
-  EXPECT_LE(run.stats.merges.rejected_inputs, 0.05 * links.rings);
+  EXPECT_LE(run.stats.merges.rejected_inputs, 0.08 * links.rings);
   EXPECT_EQ(run.stats.intersecting_face_pairs, 0);
   EXPECT_NEAR(radius, 1.0, 0.05);
 }
