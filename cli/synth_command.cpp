@@ -114,6 +114,7 @@ SynthRequest synth_request(const SynthArgs& args, const SynthSettings& settings)
   request.cells = args.cells;
   request.max_patches = args.max_patches;
   request.cleanup = args.cleanup;
+  request.fill_margin = args.fill_margin;
   request.symmetry = args.symmetry;
   request.shell_height = args.shell_height;
   request.embed = args.embed;

@@ -14,6 +14,10 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
   cmd->add_option("--cells", args.cells, "grid cells along the swatch's shorter side")->capture_default_str();
   cmd->add_option("--max-patches", args.max_patches, "stop after this many patches (0: fill the plane)");
   cmd->add_flag("!--no-cleanup", args.cleanup, "keep elements that could not be made whole");
+  cmd->add_option("--fill-margin", args.fill_margin,
+                  "place a repeating pattern's elements straight at its periods, over a base farther than this many "
+                  "periods from a cone or border (0: every element patch by patch)")
+      ->capture_default_str();
   cmd->add_option("--base", args.base, "base mesh to cover (OBJ, PLY, OFF, STL) instead of a plane");
   cmd->add_option("--scale", args.scale, "with --base: swatch's longer side / base's bounding-box diagonal")
       ->capture_default_str();

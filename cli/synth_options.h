@@ -23,6 +23,7 @@ struct SynthArgs {
   int cells = 16;                   //!< grid cells along the swatch's shorter side
   int max_patches = 0;              //!< stop after this many patches (0: fill the plane)
   bool cleanup = true;              //!< remove elements that could not be made whole
+  double fill_margin = 0.5;         //!< QuiltOptions::fill_margin
   bool provenance = false;          //!< write each vertex's swatch vertex (PLY `origin`, glTF `_ORIGIN`)
   std::string base;                 //!< base mesh; empty: a plane (--plane)
   double scale = 0.1;               //!< swatch's longer side / base's bounding-box diagonal

@@ -304,7 +304,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       [](std::optional<Array3d> swatch_vertices, std::optional<Array3i> swatch_faces,
          std::optional<std::pair<double, double>> plane, std::optional<Array3d> base_vertices,
          std::optional<Array3i> base_faces, double scale, uint64_t seed, const std::string& backend,
-         int cells, bool cleanup, int symmetry, double shell_height, const std::string& embed,
+         int cells, bool cleanup, double fill_margin, int symmetry, double shell_height, const std::string& embed,
          bool per_patch_charts, bool minimize_distortion, bool keep_texture,
          std::optional<py::function> progress, CancelToken* cancel, std::optional<Array3d> field_points,
          std::optional<Array3d> field_directions) {
@@ -319,6 +319,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         request.seed = seed;
         request.cells = cells;
         request.cleanup = cleanup;
+        request.fill_margin = fill_margin;
         request.symmetry = symmetry;
         request.shell_height = shell_height;
         request.embed = embed;
@@ -377,7 +378,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("swatch_vertices") = py::none(), py::arg("swatch_faces") = py::none(),
       py::arg("plane") = py::none(), py::arg("base_vertices") = py::none(),
       py::arg("base_faces") = py::none(), py::arg("scale") = 0.1, py::arg("seed") = 1,
-      py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("symmetry") = 0,
+      py::arg("backend") = "auto", py::arg("cells") = 16, py::arg("cleanup") = true, py::arg("fill_margin") = 0.5, py::arg("symmetry") = 0,
       py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
       py::arg("minimize_distortion") = true, py::arg("keep_texture") = false,
       py::arg("progress") = py::none(), py::arg("cancel") = nullptr, py::arg("field_points") = py::none(),

@@ -108,6 +108,8 @@ void check_synth_request(const SynthRequest& r) {
   if (!curved && !r.field.empty()) fail("{field} needs {base}");
   if (r.embed != "shell" && r.embed != "normal") fail("{embed}: expected shell or normal, got '" + r.embed + "'");
   if (r.cells < 4 || r.cells > 256) fail("{cells}: expected 4..256, got " + std::to_string(r.cells));
+  if (!(r.fill_margin >= 0.0) || !std::isfinite(r.fill_margin))
+    fail("{fill_margin}: expected a number >= 0, got " + std::to_string(r.fill_margin));
 }
 
 double estimate_synth_bytes(const TriMesh& swatch, double width, double height) {
@@ -140,6 +142,7 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
   common.cells_across_swatch = request.cells;
   common.max_patches = request.max_patches;
   common.cleanup = request.cleanup;
+  common.fill_margin = request.fill_margin;
   common.matching.grid_folder = request.grid_folder;
   common.cancel = hooks.cancel;
   common.progress = hooks.progress;

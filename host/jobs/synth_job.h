@@ -37,6 +37,7 @@ struct SynthRequest {
   int cells = 16;                      //!< grid cells along the swatch's shorter side
   int max_patches = 0;                 //!< stop after this many patches (0: until covered)
   bool cleanup = true;                 //!< remove elements that could not be made whole
+  double fill_margin = 0.5;            //!< QuiltOptions::fill_margin
   int symmetry = 0;                    //!< n of the layout's field; 0: the swatch's own
   double shell_height = 0.0;           //!< layer height in base units; 0: the swatch's at scale
   std::string embed = "shell";         //!< shell or normal

@@ -93,7 +93,8 @@ glm::dvec2 lattice_phase(const QuiltSwatch& swatch, const SwatchLattice& lattice
 // from the phase where the centre of their bounds lies in the domain, as the step would place
 // them; empty where some element does not stand alone.
 std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLattice& lattice, LatticeContacts& contacts,
-                                       const glm::dvec2& phase, const Rect2& domain, double tolerance) {
+                                       const glm::dvec2& phase, const Rect2& domain, double tolerance,
+                                       const CancelToken* cancel) {
   const std::vector<LatticeClass> classes = lattice_classes(swatch, lattice, contacts, tolerance);
   if (!std::all_of(classes.begin(), classes.end(), [](const LatticeClass& c) { return c.alone; })) return {};
   const std::array<glm::dvec2, 2>& b = lattice.basis;
@@ -107,7 +108,8 @@ std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLa
       k_lo = glm::min(k_lo, k);
       k_hi = glm::max(k_hi, k);
     }
-    for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1)
+    for (double k1 = std::ceil(k_lo.y); k1 <= k_hi.y; ++k1) {
+      if (cancel) cancel->check();
       for (double k0 = std::ceil(k_lo.x); k0 <= k_hi.x; ++k0) {
         const glm::dvec2 t = phase + k0 * b[0] + k1 * b[1];
         if (!domain.contains(0.5 * (bounds.lo + bounds.hi) + t)) continue;
@@ -118,6 +120,7 @@ std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLa
         e.source = cls.element;
         layer.push_back(std::move(e));
       }
+    }
   }
   return layer;
 }
@@ -177,11 +180,15 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   std::vector<PlaneElement> layer;
   if (lattice && options.fill_margin > 0.0) {
     StageTimer timer(seconds, "fill");
-    layer = filled_plane(swatch, *lattice, *contacts, phase, domain, setup.step.copy_tolerance * swatch.mean_edge);
+    layer = filled_plane(swatch, *lattice, *contacts, phase, domain, setup.step.copy_tolerance * swatch.mean_edge,
+                         options.cancel);
     stats.filled_elements = static_cast<int>(layer.size());
     // The pattern covers the plane: no patch is left to place.
-    if (!layer.empty())
+    if (!layer.empty()) {
       for (int c = 0; c < total_cells; ++c) seeds.mark_processed(c);
+      const double area = total_cells * cell * cell;
+      if (options.progress) options.progress(QuiltProgress{area, area, total_cells, total_cells, 0});
+    }
   }
   PatchRequest request;
   request.grid = grid;

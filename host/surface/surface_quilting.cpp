@@ -174,6 +174,7 @@ class SurfaceDriver {
     std::vector<Record> records;
     for (int c = 0; c < total_cells; ++c) {
       if (tried[c]) continue;
+      if (options_.cancel) options_.cancel->check();
       tried[c] = 1;
       // A window seeded where the pattern breaks would place little.
       if (fill_->near_break(cells_.centres[c])) continue;
@@ -212,23 +213,19 @@ class SurfaceDriver {
     stats_.filled_elements = static_cast<int>(std::count(alive_.begin(), alive_.end(), 1));
   }
 
-  // Where the shell bends the pattern, filled elements can pass through themselves or each other
-  // in space, where the step would have refused them: those are left to it.
+  // Where the shell bends the pattern, or the base passes through itself, filled elements can
+  // pass through themselves or each other in space, where the step would have refused them: the
+  // fewest that leave the rest apart are left to it, as the clean-up would choose them.
   void keep_apart_in_space() {
     tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t e) { fill_in_space(elements_[e]); });
-    TriMesh joined;
-    std::vector<int32_t> face_element;
+    std::vector<TriMesh> placed(elements_.size());
+    std::vector<const TriMesh*> meshes;
     for (size_t e = 0; e < elements_.size(); ++e) {
-      const auto first = static_cast<int32_t>(joined.positions.size());
-      joined.positions.insert(joined.positions.end(), elements_[e].in_space.begin(), elements_[e].in_space.end());
-      for (const Tri& t : elements_[e].triangles) {
-        joined.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
-        face_element.push_back(static_cast<int32_t>(e));
-      }
+      placed[e].positions = elements_[e].in_space;
+      placed[e].triangles = elements_[e].triangles;
+      meshes.push_back(&placed[e]);
     }
-    const FaceIntersections met = find_intersecting_faces(joined, face_element);
-    for (const auto* pairs : {&met.different_elements, &met.same_element})
-      for (const auto& [a, b] : *pairs) alive_[face_element[a]] = alive_[face_element[b]] = 0;
+    remove_broken_elements(meshes, false, swatch_.unfolded_elements, alive_);
   }
 
   SurfaceQuilt run() {
@@ -240,6 +237,8 @@ class SurfaceDriver {
       const int total_cells = static_cast<int>(cells_.centres.size());
       return QuiltProgress{processed_area_, total_area_, total_cells - seeds_.unprocessed_count(), total_cells, 0};
     };
+    // What the fill covered shows before the first patch.
+    if (fill_ && options_.progress) options_.progress(surface.progress());
     run_seed_loop(seeds_, holes_, options_, stats_, surface);
     return finish();
   }

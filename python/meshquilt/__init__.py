@@ -100,8 +100,8 @@ def swatch_kinds() -> list:
 
 def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, float]] = None,
           base: Optional[MeshLike] = None, scale: float = 0.1, seed: int = 1, backend: str = "auto",
-          cells: int = 16, cleanup: bool = True, symmetry: int = 0, shell_height: float = 0.0,
-          embed: str = "shell", per_patch_charts: bool = False, minimize_distortion: bool = True,
+          cells: int = 16, cleanup: bool = True, fill_margin: float = 0.5, symmetry: int = 0,
+          shell_height: float = 0.0, embed: str = "shell", per_patch_charts: bool = False, minimize_distortion: bool = True,
           keep_texture: bool = False, progress: Optional[Callable[[float, float], None]] = None,
           cancel: Optional[CancelToken] = None, field: Optional[Field] = None) -> Result:
     """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
@@ -124,7 +124,7 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
         bv, bf = _arrays(base, "base")
     fp, fd = _field_arrays(field)
     d = _meshquilt.synth(sv, sf, None if plane is None else (float(plane[0]), float(plane[1])), bv, bf, scale, seed,
-                         backend, cells, cleanup, symmetry, shell_height, embed, per_patch_charts,
+                         backend, cells, cleanup, fill_margin, symmetry, shell_height, embed, per_patch_charts,
                          minimize_distortion, keep_texture, progress, cancel, fp, fd)
     return _mesh(d, Result, stats=d["stats"], texture=d.get("texture"))
 

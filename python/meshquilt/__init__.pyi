@@ -41,7 +41,7 @@ Field = Tuple[Any, Any]
 def swatch(kind: str, preset: str = ..., seed: int = ..., **options: Any) -> Mesh: ...
 def synth(swatch: Optional[MeshLike] = ..., *, plane: Optional[Tuple[float, float]] = ..., base: Optional[MeshLike] = ...,
           scale: float = ..., seed: int = ..., backend: str = ..., cells: int = ..., cleanup: bool = ...,
-          symmetry: int = ..., shell_height: float = ..., embed: str = ..., per_patch_charts: bool = ...,
+          fill_margin: float = ..., symmetry: int = ..., shell_height: float = ..., embed: str = ..., per_patch_charts: bool = ...,
           minimize_distortion: bool = ..., keep_texture: bool = ...,
           progress: Optional[Callable[[float, float], None]] = ..., cancel: Optional[CancelToken] = ...,
           field: Optional[Field] = ...) -> Result: ...

@@ -3,6 +3,7 @@
 numpy dtypes and shapes. Run by ctest with PYTHONPATH at build/python and MESHQUILT_CLI set."""
 import os
 import json
+import math
 import struct
 import subprocess
 import tempfile
@@ -355,7 +356,8 @@ def test_animate_equals_the_command_line_frame_for_frame():
 
 def test_progress_rises_to_the_whole_and_cancel_stops_the_job():
     shares = []
-    meshquilt.synth(plane=(2, 2), backend="cpu", progress=lambda share, left: shares.append((share, left)))
+    meshquilt.synth(plane=(2, 2), backend="cpu", fill_margin=0,
+                    progress=lambda share, left: shares.append((share, left)))
     assert len(shares) > 3
     assert all(b[0] >= a[0] for a, b in zip(shares, shares[1:]))
     assert shares[-1][0] == pytest.approx(1.0)
@@ -469,7 +471,7 @@ def test_edit_ages_and_keeps_the_rest():
     result = meshquilt.synth(plane=(2, 2), backend="cpu")
     kept = meshquilt.edit(result, age=0.1, seed=3)
     before, after = np.unique(result.element), np.unique(kept.element)
-    assert len(before) - len(after) == round(0.1 * len(before))
+    assert len(before) - len(after) == math.floor(0.1 * len(before) + 0.5)  # halves away from zero
     assert set(after) <= set(before)
     report = meshquilt.inspect(kept)
     assert report["elements"] == len(after)
