@@ -75,12 +75,23 @@ def measure_default_job(folder, options):
     env = dict(os.environ, MESHQUILT_CACHE=os.path.join(folder, "cache"))
     job = ["--base", os.path.join(ROOT, "data", "sphere.off"), "--scale", "0.2"]
     _, _, built = synth_stats(job, folder, env)  # the first job builds the grid
-    runs = [synth_stats(job, folder, env) for _ in range(options.runs)]
+    runs, old_runs = [], []
+    for _ in range(options.runs):
+        runs.append(synth_stats(job, folder, env))
+        if options.old:  # in turn, so both see the same machine
+            old_runs.append(timed([options.old, "synth", *job, "--backend", "cpu", "--progress", "none", "-o",
+                                   os.path.join(folder, "old.ply")], env=env)[0])
     seconds = statistics.median(r[0] for r in runs)
     stats = runs[-1][2]
     report = rings(os.path.join(folder, "out.ply"), None)
+    against_old = ""
+    if old_runs:
+        old = statistics.median(old_runs)
+        against_old = ("Run in turn with the build at %s, which takes %.2f s, the job takes %.2fx its time."
+                       % (options.old_name or "OLD", old, seconds / old))
     return {"faces": stats["faces"], "elements": stats["elements"], "seconds": seconds,
-            "peak_mib": statistics.median(r[1] for r in runs),
+            "peak_mib": statistics.median(r[1] for r in runs), "against_old": against_old,
+            "patches": stats["patches"], "filled": stats.get("filled_elements", 0),
             "stages": stage_shares(stats["stages"], 7), "lattice_copies": stats.get("lattice_copies", 0),
             "grid_built": built["stages"]["index"], "grid_read": stats["stages"]["index"],
             "closed": report["closed_elements"], "intersecting": report["intersecting_face_pairs"],
@@ -100,7 +111,7 @@ def measure_repeat(folder, options):
     names = [l.split("|")[1].strip() for l in table.splitlines() if l.startswith("| ")][1:]
     rows = table_rows(table, [n.replace("-", "_").replace(".", "_") for n in names if not n.startswith("---")])
     small = rows["plane4x4_small_mail"]
-    return {"table": table.strip(), "rows": rows, "small_faces": int(small["faces"]),
+    return {"table": table.strip(), "rows": rows, "small_faces": int(small["faces"]), "old_name": options.old_name,
             "small_seconds": float(small["new_s"]), "small_floor": float(small["floor_s"]),
             "small_over_floor": float(small["new_over_floor"])}
 

@@ -101,9 +101,10 @@ def swatch_kinds() -> list:
 def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, float]] = None,
           base: Optional[MeshLike] = None, scale: float = 0.1, seed: int = 1, backend: str = "auto",
           cells: int = 16, cleanup: bool = True, fill_margin: float = 0.5, symmetry: int = 0,
-          shell_height: float = 0.0, embed: str = "shell", per_patch_charts: bool = False, minimize_distortion: bool = True,
-          keep_texture: bool = False, progress: Optional[Callable[[float, float], None]] = None,
-          cancel: Optional[CancelToken] = None, field: Optional[Field] = None) -> Result:
+          shell_height: float = 0.0, embed: str = "shell", per_patch_charts: bool = False,
+          minimize_distortion: bool = True, keep_texture: bool = False,
+          progress: Optional[Callable[[float, float], None]] = None, cancel: Optional[CancelToken] = None,
+          field: Optional[Field] = None) -> Result:
     """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
     swatch extents, or over `base` at `scale` (the swatch's longer side over the base's bounding-box
     diagonal), as `meshquilt synth` does with the same options: the same seed gives the same
@@ -111,10 +112,12 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
     (over a base) also returns the layer in texture space, the bytes of `--write-texture`'s file,
     for `embed` over the base posed or edited. `field` = (points, directions), two (K, 3) arrays:
     directions drawn over the base, each held at the base vertex nearest its point (synth's
-    --field file with `point` entries); see `guidance`. `progress(share, seconds_left)` is called
-    after each patch (seconds_left is -1 until something is covered); raising in it cancels the
-    job. The engine runs without the GIL. Swatch and base are repaired as the command line repairs
-    files (winding, duplicates, T-junctions...); stats["repairs"] counts what was done."""
+    --field file with `point` entries); see `guidance`. fill_margin is synth's --fill-margin (0:
+    every element through the patch step). `progress(share, seconds_left)` is called once a
+    repeating pattern is filled and after each patch (seconds_left is -1 until something is
+    covered); raising in it cancels the job. The engine runs without the GIL. Swatch and base are
+    repaired as the command line repairs files (winding, duplicates, T-junctions...);
+    stats["repairs"] counts what was done."""
     if (plane is None) == (base is None):
         raise TypeError("synth: give plane=(width, height) or base=(vertices, faces)")
     sv = sf = bv = bf = None
