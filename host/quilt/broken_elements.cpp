@@ -29,9 +29,13 @@ BrokenElements remove_broken_elements(const std::vector<const TriMesh*>& element
       part_of.push_back(i);
     }
   const auto test = [&] {
-    std::vector<TriMesh> parts;
-    for (size_t i : part_of) parts.push_back(*elements[i]);
-    return find_intersecting_faces(join_elements(parts), face_part);
+    TriMesh joined;
+    for (size_t i : part_of) {
+      const auto first = static_cast<int32_t>(joined.positions.size());
+      joined.positions.insert(joined.positions.end(), elements[i]->positions.begin(), elements[i]->positions.end());
+      for (const Tri& t : elements[i]->triangles) joined.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+    }
+    return find_intersecting_faces(joined, face_part);
   };
   const FaceIntersections found = known && removed.open == 0 ? *known : test();
   if (swatch_unfolded) {

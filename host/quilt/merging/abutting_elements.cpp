@@ -38,14 +38,27 @@ int32_t join_abutting_elements(TriMesh& layer, double relative_tolerance, std::v
     return std::array<int32_t, 3>{point[t[0]], point[t[1]], point[t[2]]};
   };
 
-  std::vector<FaceKey> keys(face_count);
+  // Faces grouped by their lowest corner (a counting sort, linear in the faces), then ordered
+  // within each small group.
+  std::vector<int32_t> start(layer.positions.size() + 1, 0);
+  std::vector<std::array<int32_t, 3>> sorted_corners(face_count);
   for (size_t f = 0; f < face_count; ++f) {
-    keys[f] = {corners_of(f), static_cast<int32_t>(f)};
-    std::sort(keys[f].corners.begin(), keys[f].corners.end());
+    sorted_corners[f] = corners_of(f);
+    std::sort(sorted_corners[f].begin(), sorted_corners[f].end());
+    ++start[sorted_corners[f][0] + 1];
   }
-  std::sort(keys.begin(), keys.end(), [](const FaceKey& a, const FaceKey& b) {
+  for (size_t v = 0; v < layer.positions.size(); ++v) start[v + 1] += start[v];
+  std::vector<FaceKey> keys(face_count);
+  for (size_t f = 0; f < face_count; ++f) keys[start[sorted_corners[f][0]]++] = {sorted_corners[f], static_cast<int32_t>(f)};
+  const auto key_order = [](const FaceKey& a, const FaceKey& b) {
     return a.corners != b.corners ? a.corners < b.corners : a.face < b.face;
-  });
+  };
+  for (size_t k = 0; k < face_count;) {
+    size_t end = k + 1;
+    while (end < face_count && keys[end].corners[0] == keys[k].corners[0]) ++end;
+    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(k), keys.begin() + static_cast<std::ptrdiff_t>(end), key_order);
+    k = end;
+  }
   // Exactly two faces on the same points, of different elements, facing each other.
   std::vector<std::pair<int32_t, int32_t>> pairs;
   for (size_t k = 0; k < keys.size();) {
