@@ -21,8 +21,8 @@ glm::dvec2 centroid_of(const TriMesh& mesh) {
 }
 
 // The period d with a + d = b, where b - a lies within `tolerance` of one.
-bool period_between(const glm::dvec2& a, const glm::dvec2& b, const std::array<glm::dvec2, 2>& basis, double tolerance,
-                    glm::dvec2& d) {
+bool period_between(const glm::dvec2& a, const glm::dvec2& b, const std::array<glm::dvec2, 2>& basis,
+                    double tolerance, glm::dvec2& d) {
   d = nearest_period(b - a, basis);
   return glm::distance(b - a, d) <= tolerance;
 }

@@ -1,8 +1,8 @@
 #pragma once
 //! The distinct elements of a repeating swatch's pattern: swatch elements that are copies of one
 //! another at a period form one class, so the pattern holds one element of each class at each
-//! period. A class whose element no other element of the pattern comes near can be placed
-//! straight at its periods: the patch step would find nothing to pair it with.
+//! period. A class whose element no other element of the pattern would be merged with can be
+//! placed straight at its periods: the patch step would leave it as it is.
 
 #include <cstdint>
 #include <vector>
@@ -16,7 +16,7 @@
 namespace meshquilt {
 
 struct LatticeClass {
-  int32_t element = -1;     //!< the swatch element standing for the class
+  int32_t element = -1;      //!< the swatch element standing for the class
   glm::dvec2 centroid{0.0};  //!< x-y mean of its vertices, swatch frame
   //! No element of another class, nor of this one at another period, comes within the contacts'
   //! reach of it; nor does another class lie at the same place.

@@ -12,7 +12,8 @@
 
 namespace meshquilt {
 
-std::vector<double> distance_to_breaks(const BaseSurface& base, const std::vector<std::pair<int32_t, Vec3>>& points) {
+std::vector<double> distance_to_breaks(const BaseSurface& base,
+                                       const std::vector<std::pair<int32_t, Vec3>>& points) {
   const TriMesh& mesh = base.mesh;
   std::vector<double> reached(mesh.num_vertices(), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, int32_t>;
@@ -59,15 +60,22 @@ size_t LatticeFill::KeyHash::operator()(const Key& k) const {
 LatticeFill::LatticeFill(const BaseSurface& base, const QuiltSwatch& swatch, const SwatchLattice& lattice,
                          std::vector<LatticeClass> classes, std::vector<double> break_distance, double margin,
                          double unit, double height_unit)
-    : base_(base), swatch_(swatch), lattice_(lattice), classes_(std::move(classes)), break_distance_(std::move(break_distance)),
-      margin_(margin), unit_(unit), height_unit_(height_unit),
+    : base_(base),
+      swatch_(swatch),
+      lattice_(lattice),
+      classes_(std::move(classes)),
+      break_distance_(std::move(break_distance)),
+      margin_(margin),
+      unit_(unit),
+      height_unit_(height_unit),
       // Two elements of the pattern lie far more than a tenth of an edge apart; rounding, far less.
       bucket_(0.1 * swatch.mean_edge * unit) {
   for (const LatticeClass& c : classes_) {
     const TriMesh& element = swatch_.elements[c.element];
     double z = 0.0;
     for (const Vec3& p : element.positions) z += p.z;
-    class_height_.push_back(element.positions.empty() ? 0.0 : z / static_cast<double>(element.positions.size()));
+    class_height_.push_back(element.positions.empty() ? 0.0
+                                                      : z / static_cast<double>(element.positions.size()));
     class_bounds_.push_back(swatch_.element_bounds[c.element]);
   }
 }
@@ -84,7 +92,8 @@ bool LatticeFill::near_break(const SurfacePoint& p) const {
 }
 
 int32_t LatticeFill::placed_before(const Vec3& centre) const {
-  const Key k{static_cast<int64_t>(std::floor(centre.x / bucket_)), static_cast<int64_t>(std::floor(centre.y / bucket_)),
+  const Key k{static_cast<int64_t>(std::floor(centre.x / bucket_)),
+              static_cast<int64_t>(std::floor(centre.y / bucket_)),
               static_cast<int64_t>(std::floor(centre.z / bucket_))};
   for (int64_t dz = -1; dz <= 1; ++dz)
     for (int64_t dy = -1; dy <= 1; ++dy)
@@ -99,7 +108,8 @@ int32_t LatticeFill::placed_before(const Vec3& centre) const {
 
 FilledWindow LatticeFill::fill(const SurfacePatch& window, const glm::dvec2& shift) {
   FilledWindow out;
-  Rect2 box{glm::dvec2(std::numeric_limits<double>::max()), glm::dvec2(std::numeric_limits<double>::lowest())};
+  Rect2 box{glm::dvec2(std::numeric_limits<double>::max()),
+            glm::dvec2(std::numeric_limits<double>::lowest())};
   for (const glm::dvec2& p : window.uv) {
     box.lo = glm::min(box.lo, p);
     box.hi = glm::max(box.hi, p);
@@ -159,9 +169,10 @@ FilledWindow LatticeFill::fill(const SurfacePatch& window, const glm::dvec2& shi
     for (const Tri& f : element.triangles)
       for (int k = 0; k < 3; ++k) {
         const int32_t u = f[k], v = f[(k + 1) % 3];
-        const double plane = glm::distance(glm::dvec2(element.positions[u]), glm::dvec2(element.positions[v])) * unit_;
-        const double base =
-            glm::distance(base_.position(candidate.vertices[u].point), base_.position(candidate.vertices[v].point));
+        const double plane =
+            glm::distance(glm::dvec2(element.positions[u]), glm::dvec2(element.positions[v])) * unit_;
+        const double base = glm::distance(base_.position(candidate.vertices[u].point),
+                                          base_.position(candidate.vertices[v].point));
         if (base > 4.0 * plane + bucket_) return;
       }
     candidate.whole = true;

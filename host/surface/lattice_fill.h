@@ -20,7 +20,8 @@ namespace meshquilt {
 
 //! How far each base vertex lies from the nearest of `points` (a face holding each, and where)
 //! or from the base's border, along edges: where the pattern breaks.
-std::vector<double> distance_to_breaks(const BaseSurface& base, const std::vector<std::pair<int32_t, Vec3>>& points);
+std::vector<double> distance_to_breaks(const BaseSurface& base,
+                                       const std::vector<std::pair<int32_t, Vec3>>& points);
 
 //! A swatch element placed over the base; the n-th placed is element n of the fill.
 struct FilledElement {
@@ -44,8 +45,8 @@ class LatticeFill {
   //! unit: base units per swatch unit in the plane; height_unit: per swatch z. `base`, `swatch`
   //! and `lattice` outlive this object.
   LatticeFill(const BaseSurface& base, const QuiltSwatch& swatch, const SwatchLattice& lattice,
-              std::vector<LatticeClass> classes, std::vector<double> break_distance, double margin, double unit,
-              double height_unit);
+              std::vector<LatticeClass> classes, std::vector<double> break_distance, double margin,
+              double unit, double height_unit);
 
   //! Some class stands alone: there is something to fill.
   bool any() const;
@@ -71,11 +72,12 @@ class LatticeFill {
   const QuiltSwatch& swatch_;
   const SwatchLattice& lattice_;
   std::vector<LatticeClass> classes_;
-  std::vector<double> class_height_;  // mean z of each class's element
-  std::vector<Rect2> class_bounds_;   // x-y bounds of each class's element
+  std::vector<double> class_height_;    // mean z of each class's element
+  std::vector<Rect2> class_bounds_;     // x-y bounds of each class's element
   std::vector<double> break_distance_;  // per base vertex
   double margin_, unit_, height_unit_, bucket_;
-  std::unordered_map<Key, std::vector<std::pair<Vec3, int32_t>>, KeyHash> placed_;  // centres of placed elements
+  // The centre of each placed element, and which it is.
+  std::unordered_map<Key, std::vector<std::pair<Vec3, int32_t>>, KeyHash> placed_;
   int filled_ = 0;
 };
 

@@ -1,5 +1,5 @@
 // Lattice classes: which swatch elements are copies of one another at a period, and which stand
-// alone in the pattern (the step would pair them with nothing), against brute-force references.
+// alone in the pattern (the step would pair them with nothing), on patterns whose answer is known.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -153,7 +153,8 @@ TEST(LatticeFill, APlaneHoldsTheRingsOfTheStep) {
   const Box3 plane = bounding_box(filled.positions);
   const QuiltSwatch prepared = prepare_swatch(swatch);
   double ring_size = 0.0;
-  for (const Rect2& b : prepared.element_bounds) ring_size = std::max(ring_size, std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y));
+  for (const Rect2& b : prepared.element_bounds)
+    ring_size = std::max(ring_size, std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y));
   for (size_t k = 0; k < rings.size(); ++k) {
     if (matched[k]) continue;
     const Vec3 c = centre(rings[k]);
