@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "mesh/measures.h"
 #include "mesh/topology.h"
 #include "quilt/lattice_classes.h"
 #include "quilt/lattice_copies.h"
@@ -123,6 +124,38 @@ std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLa
     }
   }
   return layer;
+}
+
+// Whether the clean-up would find nothing to do in a plane filled with one pattern: the pattern
+// repeats, so a sample of it holding every element of each class within reach of its others (those
+// whose centres lie within two of the widest elements and periods of the plane's middle) has what
+// the whole has: no element open, folded or passing through another, none meeting another face to
+// face.
+bool filled_pattern_is_clean(const std::vector<PlaneElement>& layer, const QuiltSwatch& swatch,
+                             const SwatchLattice& lattice, const Rect2& domain) {
+  double reach = std::max(glm::length(lattice.basis[0]), glm::length(lattice.basis[1]));
+  for (const Rect2& b : swatch.element_bounds) reach = std::max(reach, glm::length(b.hi - b.lo));
+  const glm::dvec2 middle = 0.5 * (domain.lo + domain.hi);
+  const Rect2 sample{middle - 2.0 * reach, middle + 2.0 * reach};
+  std::vector<TriMesh> parts;
+  for (const PlaneElement& e : layer)
+    if (sample.contains(0.5 * (e.bounds.lo + e.bounds.hi))) parts.push_back(e.mesh);
+  std::vector<const TriMesh*> meshes;
+  for (const TriMesh& m : parts) meshes.push_back(&m);
+  std::vector<uint8_t> alive(parts.size(), 1);
+  const BrokenElements broken = remove_broken_elements(meshes, swatch.closed_elements, swatch.unfolded_elements, alive);
+  if (broken.open + broken.folded + broken.intersecting > 0) return false;
+  // Corners weld within the tolerance the whole plane's size gives.
+  Box3 whole;
+  for (const PlaneElement& e : layer)
+    for (const Vec3& p : e.mesh.positions) {
+      whole.lo = glm::min(whole.lo, p);
+      whole.hi = glm::max(whole.hi, p);
+    }
+  TriMesh joined = join_elements(parts);
+  const Box3 part = bounding_box(joined.positions);
+  const double tolerance = kWeldTolerance * glm::length(whole.extent()) / glm::length(part.extent());
+  return join_abutting_elements(joined, tolerance) == 0;
 }
 
 // Over a plane a repeating swatch is placed at a period from the phase, among those within the
@@ -250,6 +283,13 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   stats.holes = hole_summary.holes;
   stats.hole_cells = hole_summary.cells;
   stats.largest_hole_area = hole_summary.largest_cells * cell * cell;
+  // A plane the pattern filled alone is clean when a sample of the pattern is: the clean-up's tests
+  // over every face would only find again what the sample shows.
+  QuiltOptions finishing = options;
+  if (options.cleanup && stats.filled_elements > 0 && stats.filled_elements == static_cast<int>(layer.size())) {
+    StageTimer timer(seconds, "cleanup");
+    finishing.cleanup = !filled_pattern_is_clean(layer, swatch, *lattice, domain);
+  }
   std::vector<TriMesh> elements;
   std::vector<uint8_t> alive;
   std::vector<int32_t> sources;
@@ -258,8 +298,8 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
     alive.push_back(e.alive ? 1 : 0);
     sources.push_back(e.source);
   }
-  TriMesh result = finish_quilt(elements, alive, sources, setup, options, stats);
-  if (options.cleanup) {
+  TriMesh result = finish_quilt(elements, alive, sources, setup, finishing, stats);
+  if (finishing.cleanup) {
     StageTimer timer(seconds, "cleanup");
     stats.joined_elements = join_abutting_elements(result, kWeldTolerance);
   }

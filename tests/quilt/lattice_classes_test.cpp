@@ -120,6 +120,44 @@ TEST(LatticeClasses, ChainMailRingsStandAloneAndYarnsDoNot) {
   for (const LatticeClass& c : twill.classes) EXPECT_FALSE(c.alone) << "yarn " << c.element;
 }
 
+// A box from lo to hi, as a closed element.
+TriMesh box(const Vec3& lo, const Vec3& hi) {
+  TriMesh m;
+  for (int k = 0; k < 8; ++k) m.positions.emplace_back(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return m;
+}
+
+// Bars along x and bars along y crossing through each other beside every site's centre: each
+// stands alone (no bar is close to another along its length), so the plane is filled, and the clean-up must still
+// find every crossing: the sample of the pattern shows them, and the whole plane is cleaned.
+TEST(LatticeFill, APatternWhoseElementsCrossIsCleanedEverywhere) {
+  std::vector<TriMesh> parts;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 at(3.0 * i, 3.0 * j, 0.0);
+      parts.push_back(box(at + Vec3(-1.0, -0.1, -0.1), at + Vec3(1.0, 0.1, 0.1)));
+      parts.push_back(box(at + Vec3(0.2, -1.0, -0.05), at + Vec3(0.4, 1.0, 0.15)));
+    }
+  const TriMesh swatch = join_elements(parts);
+  const Classes c = classes_of(swatch);
+  ASSERT_TRUE(c.lattice);
+  ASSERT_EQ(c.classes.size(), 2u);
+  ASSERT_TRUE(c.classes[0].alone && c.classes[1].alone);
+  auto device = engine::open_device(engine::BackendChoice::cpu);
+  PlanarQuiltOptions options;
+  options.width = options.height = 3.0;
+  QuiltStats stats;
+  const TriMesh plane = quilt_plane(swatch, *device, options, &stats);
+  EXPECT_GT(stats.filled_elements, 100);
+  EXPECT_EQ(stats.patches, 0);
+  // Every site loses one of its two bars.
+  EXPECT_EQ(stats.dropped_intersecting, stats.filled_elements / 2);
+  const FaceIntersections met = find_intersecting_faces(plane, plane.elements);
+  EXPECT_TRUE(met.different_elements.empty());
+}
+
 // Over a plane a filled pattern holds every ring the patch step places at the same place, and
 // the rings the step missed lie at the plane's edge; none meets another.
 TEST(LatticeFill, APlaneHoldsTheRingsOfTheStep) {
