@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "mesh/measures.h"
+#include "quilt/lattice_copies.h"
 #include "quilt/plane_rect.h"
 #include "spatial/face_bvh.h"
 
@@ -30,7 +31,7 @@ bool period_between(const glm::dvec2& a, const glm::dvec2& b, const std::array<g
 }  // namespace
 
 std::vector<LatticeClass> lattice_classes(const QuiltSwatch& swatch, const SwatchLattice& lattice,
-                                          LatticeContacts& contacts, double tolerance) {
+                                          double partner_distance, double tolerance) {
   const std::array<glm::dvec2, 2>& basis = lattice.basis;
   std::vector<LatticeClass> classes;
   std::vector<uint8_t> clash;  // another class lies at the same place
@@ -56,7 +57,7 @@ std::vector<LatticeClass> lattice_classes(const QuiltSwatch& swatch, const Swatc
     clash.push_back(clashes);
   }
   // Which pairs to test: those whose bounds, the one moved by a period, come within reach.
-  const double reach = contacts.reach();
+  const double reach = partner_distance;
   const double shortest = std::min(glm::length(basis[0]), glm::length(basis[1]));
   std::vector<Rect2> bounds;
   std::vector<std::unique_ptr<FaceBvh>> faces;

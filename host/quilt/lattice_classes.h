@@ -9,7 +9,6 @@
 
 #include <glm/vec2.hpp>
 
-#include "quilt/lattice_copies.h"
 #include "quilt/quilt_swatch.h"
 #include "quilt/swatch_lattice.h"
 
@@ -18,14 +17,14 @@ namespace meshquilt {
 struct LatticeClass {
   int32_t element = -1;      //!< the swatch element standing for the class
   glm::dvec2 centroid{0.0};  //!< x-y mean of its vertices, swatch frame
-  //! No element of another class, nor of this one at another period, comes within the contacts'
-  //! reach of it; nor does another class lie at the same place.
+  //! No element of another class, nor of this one at another period, would be its merge partner
+  //! (mean pair distance within `partner_distance`); nor does another class lie at the same place.
   bool alone = false;
 };
 
 //! The classes of `swatch`'s elements under the periods of `lattice`, in the order of their first
 //! element; elements are copies when their vertices match within `tolerance` (same_element).
 std::vector<LatticeClass> lattice_classes(const QuiltSwatch& swatch, const SwatchLattice& lattice,
-                                          LatticeContacts& contacts, double tolerance);
+                                          double partner_distance, double tolerance);
 
 }  // namespace meshquilt

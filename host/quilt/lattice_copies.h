@@ -43,7 +43,6 @@ class LatticeContacts {
   LatticeContacts& operator=(const LatticeContacts&) = delete;
 
   const std::array<glm::dvec2, 2>& periods() const { return periods_; }
-  double reach() const { return reach_; }
   //! Whether element `a` moved by k.x periods[0] + k.y periods[1] comes within reach of `b`.
   bool touches(int32_t a, int32_t b, const glm::i64vec2& k);
 

@@ -93,10 +93,10 @@ glm::dvec2 lattice_phase(const QuiltSwatch& swatch, const SwatchLattice& lattice
 // The elements of a pattern that all stand alone (lattice_classes.h), placed at every period
 // from the phase where the centre of their bounds lies in the domain, as the step would place
 // them; empty where some element does not stand alone.
-std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLattice& lattice, LatticeContacts& contacts,
-                                       const glm::dvec2& phase, const Rect2& domain, double tolerance,
+std::vector<PlaneElement> filled_plane(const QuiltSwatch& swatch, const SwatchLattice& lattice,
+                                       double partner_distance, const glm::dvec2& phase, const Rect2& domain, double tolerance,
                                        const CancelToken* cancel) {
-  const std::vector<LatticeClass> classes = lattice_classes(swatch, lattice, contacts, tolerance);
+  const std::vector<LatticeClass> classes = lattice_classes(swatch, lattice, partner_distance, tolerance);
   if (!std::all_of(classes.begin(), classes.end(), [](const LatticeClass& c) { return c.alone; })) return {};
   const std::array<glm::dvec2, 2>& b = lattice.basis;
   std::vector<PlaneElement> layer;
@@ -213,7 +213,7 @@ TriMesh quilt_plane(const TriMesh& input_swatch, engine::Device& device, const P
   std::vector<PlaneElement> layer;
   if (lattice && options.fill_margin > 0.0) {
     StageTimer timer(seconds, "fill");
-    layer = filled_plane(swatch, *lattice, *contacts, phase, domain, setup.step.copy_tolerance * swatch.mean_edge,
+    layer = filled_plane(swatch, *lattice, setup.step.partner_distance * swatch.mean_edge, phase, domain, setup.step.copy_tolerance * swatch.mean_edge,
                          options.cancel);
     stats.filled_elements = static_cast<int>(layer.size());
     // The pattern covers the plane: no patch is left to place.

@@ -147,7 +147,8 @@ class SurfaceDriver {
     if (!lattice_ || !layout_->layout().on_lattice || !(options_.fill_margin > 0.0)) return nullptr;
     StageTimer timer(seconds_, "fill");
     std::vector<LatticeClass> classes =
-        lattice_classes(swatch_, *lattice_, *contacts_, setup_.step.copy_tolerance * swatch_.mean_edge);
+        lattice_classes(swatch_, *lattice_, setup_.step.partner_distance * swatch_.mean_edge,
+                        setup_.step.copy_tolerance * swatch_.mean_edge);
     // A cone's neighbourhood is left to the patch step: a period and the widest element around it.
     double widest = std::max(glm::length(lattice_->basis[0]), glm::length(lattice_->basis[1]));
     for (const LatticeClass& c : classes) {

@@ -51,8 +51,7 @@ Classes classes_of(const TriMesh& mesh) {
   Classes c{prepare_swatch(mesh), std::nullopt, {}};
   c.lattice = swatch_lattice(c.swatch, 1);
   if (!c.lattice) return c;
-  LatticeContacts contacts(c.swatch, c.lattice->basis, 0.5 * c.swatch.mean_edge);
-  c.classes = lattice_classes(c.swatch, *c.lattice, contacts, 1e-6 * c.swatch.mean_edge);
+  c.classes = lattice_classes(c.swatch, *c.lattice, 0.5 * c.swatch.mean_edge, 1e-6 * c.swatch.mean_edge);
   return c;
 }
 
