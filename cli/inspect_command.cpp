@@ -24,6 +24,7 @@ struct InspectArgs {
   bool plane = false;
   std::vector<double> region;
   double shell_height = 0.0;
+  double scale = 0.0;
   bool json = false;
   bool rings = false;
   bool yarns = false;
@@ -62,6 +63,11 @@ void add_inspect_command(CLI::App& app) {
                     ->check(CLI::PositiveNumber);
   shell->needs(base);
   plane->excludes(base);
+  auto* scale = cmd->add_option("--scale", args->scale,
+                                "with --rings, --swatch and --base: the scale synth was asked for; ring radii "
+                                "are also reported over the radius it asks (p10, median, p90)")
+                    ->check(CLI::PositiveNumber);
+  scale->needs(base);
   cmd->add_flag("--rings", args->rings,
                 "the link graph of the elements taken as rings (chain mail): links per ring, pieces, "
                 "median ring radius; with --swatch its ratio to the swatch's and, with --plane or --base, "
@@ -71,7 +77,7 @@ void add_inspect_command(CLI::App& app) {
                 "length-weighted median, and with --swatch in swatch lengths");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the readable report");
 
-  cmd->callback([args, shell] {
+  cmd->callback([args, shell, scale] {
     const TriMesh mesh = read_mesh(args->mesh);
     std::optional<TriMesh> swatch, base_mesh;
     // The swatch as synth reads it: repaired and turned into its frame.
@@ -87,6 +93,7 @@ void add_inspect_command(CLI::App& app) {
     options.swatch_name = args->swatch.string();
     options.base_name = args->base.string();
     if (shell->count() > 0) options.shell_height = args->shell_height;
+    if (scale->count() > 0) options.scale = args->scale;
     const InspectReport report =
         inspect_mesh(mesh, options, swatch ? &*swatch : nullptr, base_mesh ? &*base_mesh : nullptr);
     if (args->json) {

@@ -94,6 +94,8 @@ InspectReport::Rings ring_report(const RingLinks& links) {
   r.median_radius = links.median_radius;
   r.radius_p10 = links.radius_p10;
   r.radius_p90 = links.radius_p90;
+  r.median_aspect = links.median_aspect;
+  r.aspect_p90 = links.aspect_p90;
   return r;
 }
 
@@ -172,6 +174,17 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
       const RingLinks swatch_rings = ring_links(swatch, swatch_elements, count);
       if (swatch_rings.median_radius > 0.0)
         report.rings->radius_ratio = report.rings->median_radius / swatch_rings.median_radius;
+      if (options.scale && base_input && swatch_rings.median_radius > 0.0) {
+        const Vec3 extent = bounding_box(swatch.positions).extent();
+        const double longer = std::max(extent.x, extent.y);
+        if (longer > 0.0) {
+          const double asked =
+              swatch_rings.median_radius * *options.scale * glm::length(bounding_box(base_input->positions).extent()) / longer;
+          report.rings->asked_radius = asked;
+          report.rings->over_asked = {report.rings->radius_p10 / asked, report.rings->median_radius / asked,
+                                      report.rings->radius_p90 / asked};
+        }
+      }
       const std::optional<double> density = ring_density(ring_centre_lines(swatch, swatch_elements, count));
       if (density && options.plane) report.rings->expected_rings = *density * plane_area(mesh, options.plane_options);
       // Over a base the swatch was scaled: its density follows from the ring sizes.
@@ -256,6 +269,13 @@ nlohmann::ordered_json to_json(const InspectReport& r) {
     k["radius_p10"] = r.rings->radius_p10;
     k["radius_p90"] = r.rings->radius_p90;
     if (r.rings->radius_ratio) k["radius_ratio"] = *r.rings->radius_ratio;
+    k["median_aspect"] = r.rings->median_aspect;
+    k["aspect_p90"] = r.rings->aspect_p90;
+    if (r.rings->asked_radius) {
+      k["asked_radius"] = *r.rings->asked_radius;
+      k["radius_over_asked"] = {{"p10", r.rings->over_asked[0]}, {"median", r.rings->over_asked[1]},
+                                {"p90", r.rings->over_asked[2]}};
+    }
     if (r.rings->expected_rings) {
       k["expected_rings"] = *r.rings->expected_rings;
       k["missing_rings"] = *r.rings->expected_rings - r.rings->rings;
@@ -314,6 +334,10 @@ std::string to_text(const InspectReport& r) {
     if (k.radius_ratio) s << ", " << *k.radius_ratio << " x the swatch's";
     if (k.expected_rings) s << "; " << *k.expected_rings - k.rings << " missing of " << *k.expected_rings << " expected";
     s << "\n";
+    if (k.asked_radius)
+      s << "over asked:    " << k.over_asked[0] << " / " << k.over_asked[1] << " / " << k.over_asked[2]
+        << " (p10 / median / p90 of radius over the " << *k.asked_radius << " asked)\n";
+    s << "ring aspect:   median " << k.median_aspect << ", p90 " << k.aspect_p90 << " (longest over shortest axis)\n";
   }
   if (r.yarns) {
     s << "yarns:         " << r.yarns->yarns << " yarns, length-weighted median length " << r.yarns->weighted_median_length;

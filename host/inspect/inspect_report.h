@@ -2,6 +2,7 @@
 //! The quality report of a synthesized mesh (DESIGN.md section 8, `meshquilt inspect`): element
 //! integrity, defects, intersections, size distribution against the swatch, coverage and heights.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,6 +23,9 @@ struct InspectOptions {
   std::optional<double> shell_height;      //!< H for --base, in units of the base's bbox diagonal
   bool rings = false;                      //!< the link graph of the elements taken as rings
   bool yarns = false;                      //!< the elements' lengths taken as tubes (yarns)
+  //! With a swatch and a base: the scale synth was asked for (the swatch's longer side over the
+  //! base's bounding-box diagonal), so that ring radii are reported over the radius asked.
+  std::optional<double> scale;
   PlaneCoverageOptions plane_options;      //!< margin and grid limits for the plane coverage
   BaseCoverageOptions base_options;        //!< sampling of the base (shell_height above wins)
   // Names used in error messages (the CLI passes the file paths).
@@ -69,7 +73,12 @@ struct InspectReport {
     double largest_piece_share = 0.0;
     double median_radius = 0.0;
     double radius_p10 = 0.0, radius_p90 = 0.0;
+    double median_aspect = 1.0, aspect_p90 = 1.0;  //!< longest over shortest axis of a ring
     std::optional<double> radius_ratio;    //!< with a swatch: median radius / the swatch's
+    //! With a swatch, a base and a scale: the radius the scale asks for, and p10, median, p90 of
+    //! each ring's radius over it.
+    std::optional<double> asked_radius;
+    std::array<double, 3> over_asked{};
     std::optional<double> expected_rings;  //!< with a swatch and a plane or base: its ring density x area
   };
   std::optional<Rings> rings;

@@ -73,6 +73,26 @@ std::vector<RingCentreLine> ring_centre_lines(const TriMesh& mesh, const std::ve
       if (count[b] > 0) line.points.push_back(sum[b] / static_cast<double>(count[b]));
     for (const Vec3& p : line.points) line.radius += glm::length(p - line.centre);
     if (!line.points.empty()) line.radius /= static_cast<double>(line.points.size());
+    // Second moments of the area the centre line encloses (polygon formulas): an ellipse's go
+    // as the squares of its axes however its points are spaced.
+    double area = 0.0, cx = 0.0, cy = 0.0, xx = 0.0, yy = 0.0, xy = 0.0;
+    for (size_t i = 0; i < line.points.size(); ++i) {
+      const Vec3 p = line.points[i] - line.centre, q = line.points[(i + 1) % line.points.size()] - line.centre;
+      const double x0 = glm::dot(p, u), y0 = glm::dot(p, w), x1 = glm::dot(q, u), y1 = glm::dot(q, w);
+      const double c = x0 * y1 - x1 * y0;
+      area += c / 2.0;
+      cx += (x0 + x1) * c / 6.0;
+      cy += (y0 + y1) * c / 6.0;
+      xx += c * (x0 * x0 + x0 * x1 + x1 * x1) / 12.0;
+      yy += c * (y0 * y0 + y0 * y1 + y1 * y1) / 12.0;
+      xy += c * (x0 * y1 + 2.0 * x0 * y0 + 2.0 * x1 * y1 + x1 * y0) / 24.0;
+    }
+    if (area == 0.0) continue;
+    cx /= area;
+    cy /= area;
+    const double uu = xx / area - cx * cx, ww = yy / area - cy * cy, uw = xy / area - cx * cy;
+    const double mean = 0.5 * (uu + ww), half = std::sqrt(0.25 * (uu - ww) * (uu - ww) + uw * uw);
+    if (mean - half > 0.0) line.aspect = std::sqrt((mean + half) / (mean - half));
   }
   return lines;
 }
@@ -102,6 +122,11 @@ RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_eleme
   const auto at = [&](double q) { return radii[static_cast<size_t>(std::lround(q * static_cast<double>(radii.size() - 1)))]; };
   result.radius_p10 = at(0.1);
   result.radius_p90 = at(0.9);
+  std::vector<double> aspects;
+  for (const RingCentreLine& line : lines) aspects.push_back(line.aspect);
+  result.median_aspect = median(aspects);
+  std::sort(aspects.begin(), aspects.end());
+  result.aspect_p90 = aspects[static_cast<size_t>(std::lround(0.9 * static_cast<double>(aspects.size() - 1)))];
   // Centre lines that can meet have centres within the sum of their radii; a margin covers the
   // binning's inward bias.
   const double margin = 0.25 * result.median_radius;

@@ -18,6 +18,7 @@ struct RingCentreLine {
   Vec3 centre{0.0};
   Vec3 normal{0.0, 0.0, 1.0};  //!< of the best-fit plane (least spread)
   double radius = 0.0;         //!< mean distance of the centre line from the centre
+  double aspect = 1.0;         //!< its longest over its shortest principal axis in the plane: 1 when round
   std::vector<Vec3> points;    //!< closed polygon, in angular order about `normal`
 };
 
@@ -43,6 +44,7 @@ struct RingLinks {
   double largest_piece_share = 0.0;                //!< rings in the largest part / rings
   double median_radius = 0.0;                      //!< of the centre lines
   double radius_p10 = 0.0, radius_p90 = 0.0;       //!< their 10th and 90th percentiles
+  double median_aspect = 1.0, aspect_p90 = 1.0;    //!< of the centre lines' aspects
 };
 
 //! Rings whose centre lines could meet (centres closer than the sum of their radii plus a

@@ -142,6 +142,47 @@ TEST_F(InspectCli, RingsOfAQuiltedChainMail) {
   EXPECT_NEAR(k.at("missing_rings").get<double>(), 0.0, 0.1 * k.at("expected_rings").get<double>());
 }
 
+// Rings of a swatch grown to known sizes over a base: radius over asked follows from the scale
+// alone (the swatch's longer side over the base's diagonal), whatever the base's units.
+TEST_F(InspectCli, RingRadiusOverTheSizeAsked) {
+  const fs::path swatch_file = dir_ / "swatch.ply", layer_file = dir_ / "layer.ply", base_file = dir_ / "base.ply";
+  TriMesh swatch;
+  for (int k = 0; k < 4; ++k) {
+    const TriMesh ring = torus({3.0 * k, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.2, 32, 8);
+    const auto n = static_cast<int32_t>(swatch.positions.size());
+    swatch.positions.insert(swatch.positions.end(), ring.positions.begin(), ring.positions.end());
+    for (const Tri& t : ring.triangles) swatch.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  }
+  write_mesh(swatch, swatch_file);
+  const double longer = 3.0 * 3 + 2.4;  // x extent: four rings of outer radius 1.2, three apart
+  // A base box with diagonal 300 and, over it, ten rings of radius 10 x (0.8, 0.85, ..., 1.25).
+  TriMesh base = torus({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 100.0, 20.0, 32, 8);
+  write_mesh(base, base_file);
+  const Vec3 extent(240.0, 240.0, 40.0);
+  const double scale = longer * 10.0 / glm::length(extent);  // asks for rings of radius 10
+  TriMesh layer;
+  for (int k = 0; k < 10; ++k) {
+    const double size = 0.8 + 0.05 * k;
+    const TriMesh ring = torus({40.0 * k - 200.0, 0, 30}, {1, 0, 0}, {0, 1, 0}, 10.0 * size, 1.0, 32, 8);
+    const auto n = static_cast<int32_t>(layer.positions.size());
+    layer.positions.insert(layer.positions.end(), ring.positions.begin(), ring.positions.end());
+    for (const Tri& t : ring.triangles) layer.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  }
+  write_mesh(layer, layer_file);
+  const CliRun r = run({layer_file.string(), "--rings", "--swatch", swatch_file.string(), "--base",
+                        base_file.string(), "--scale", std::to_string(scale), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json k = nlohmann::json::parse(r.out).at("rings");
+  EXPECT_NEAR(k.at("asked_radius").get<double>(), 10.0, 0.05);
+  const nlohmann::json over = k.at("radius_over_asked");
+  EXPECT_NEAR(over.at("p10").get<double>(), 0.85, 0.01);
+  EXPECT_NEAR(over.at("median").get<double>(), 1.025, 0.03);
+  EXPECT_NEAR(over.at("p90").get<double>(), 1.2, 0.01);
+  EXPECT_NEAR(k.at("median_aspect").get<double>(), 1.0, 0.01);
+  // Without a base the scale has nothing to measure against.
+  EXPECT_NE(run({layer_file.string(), "--rings", "--scale", "0.1"}).code, 0);
+}
+
 TEST_F(InspectCli, BaseHeightsAndReadableReport) {
   TriMesh base;
   base.positions = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}};

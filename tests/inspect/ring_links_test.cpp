@@ -3,6 +3,7 @@
 // generator's chain mail, whose 4-in-1 pattern links every inner ring to four others.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -150,6 +151,26 @@ TEST(RingLinks, RadiusPercentilesOfRingsOfTenSizes) {
   EXPECT_EQ(links.links.size(), 0u);
   EXPECT_NEAR(links.radius_p10, 2.0, 0.04);
   EXPECT_NEAR(links.radius_p90, 9.0, 0.18);
+}
+
+TEST(RingLinks, AspectOfRoundAndOvalRings) {
+  // A round ring and rings drawn on ellipses of axes 1.5 x 1 and 1 x 2: aspects 1, 1.5, 2.
+  TriMesh rings = torus(Vec3(0.0), X, Y, 1.0, 0.1, 0);
+  rings = join_elements({rings, torus(Vec3(10, 0, 0), 1.5 * X, Y, 1.0, 0.1, 1)});
+  rings = join_elements({rings, torus(Vec3(20, 0, 0), Z, 2.0 * Y, 1.0, 0.1, 2)});
+  int32_t elements = 0;
+  const std::vector<int32_t> face_element = face_components(rings, &elements);
+  ASSERT_EQ(elements, 3);
+  const std::vector<RingCentreLine> lines = ring_centre_lines(rings, face_element, elements);
+  std::vector<double> aspects;
+  for (const RingCentreLine& line : lines) aspects.push_back(line.aspect);
+  std::sort(aspects.begin(), aspects.end());
+  EXPECT_NEAR(aspects[0], 1.0, 0.01);
+  EXPECT_NEAR(aspects[1], 1.5, 0.03);
+  EXPECT_NEAR(aspects[2], 2.0, 0.08);  // 24 angular bins round the ends of the long axis
+  const RingLinks links = ring_links(rings, face_element, elements);
+  EXPECT_NEAR(links.median_aspect, 1.5, 0.03);
+  EXPECT_NEAR(links.aspect_p90, 2.0, 0.08);
 }
 
 TEST(RingLinks, TheGeneratorsChainMailLinksInnerRingsToFour) {
