@@ -177,13 +177,9 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
       if (options.scale && base_input && swatch_rings.median_radius > 0.0) {
         const Vec3 extent = bounding_box(swatch.positions).extent();
         const double longer = std::max(extent.x, extent.y);
-        if (longer > 0.0) {
-          const double asked =
-              swatch_rings.median_radius * *options.scale * glm::length(bounding_box(base_input->positions).extent()) / longer;
-          report.rings->asked_radius = asked;
-          report.rings->over_asked = {report.rings->radius_p10 / asked, report.rings->median_radius / asked,
-                                      report.rings->radius_p90 / asked};
-        }
+        if (longer > 0.0)
+          report.rings->asked_radius = swatch_rings.median_radius * *options.scale *
+                                       glm::length(bounding_box(base_input->positions).extent()) / longer;
       }
       const std::optional<double> density = ring_density(ring_centre_lines(swatch, swatch_elements, count));
       if (density && options.plane) report.rings->expected_rings = *density * plane_area(mesh, options.plane_options);
@@ -273,8 +269,9 @@ nlohmann::ordered_json to_json(const InspectReport& r) {
     k["aspect_p90"] = r.rings->aspect_p90;
     if (r.rings->asked_radius) {
       k["asked_radius"] = *r.rings->asked_radius;
-      k["radius_over_asked"] = {{"p10", r.rings->over_asked[0]}, {"median", r.rings->over_asked[1]},
-                                {"p90", r.rings->over_asked[2]}};
+      const double asked = *r.rings->asked_radius;
+      k["radius_over_asked"] = {{"p10", r.rings->radius_p10 / asked}, {"median", r.rings->median_radius / asked},
+                                {"p90", r.rings->radius_p90 / asked}};
     }
     if (r.rings->expected_rings) {
       k["expected_rings"] = *r.rings->expected_rings;
@@ -335,8 +332,9 @@ std::string to_text(const InspectReport& r) {
     if (k.expected_rings) s << "; " << *k.expected_rings - k.rings << " missing of " << *k.expected_rings << " expected";
     s << "\n";
     if (k.asked_radius)
-      s << "over asked:    " << k.over_asked[0] << " / " << k.over_asked[1] << " / " << k.over_asked[2]
-        << " (p10 / median / p90 of radius over the " << *k.asked_radius << " asked)\n";
+      s << "over asked:    " << k.radius_p10 / *k.asked_radius << " / " << k.median_radius / *k.asked_radius << " / "
+        << k.radius_p90 / *k.asked_radius << " (p10 / median / p90 of radius over the " << *k.asked_radius
+        << " asked)\n";
     s << "ring aspect:   median " << k.median_aspect << ", p90 " << k.aspect_p90 << " (longest over shortest axis)\n";
   }
   if (r.yarns) {

@@ -2,7 +2,6 @@
 //! The quality report of a synthesized mesh (DESIGN.md section 8, `meshquilt inspect`): element
 //! integrity, defects, intersections, size distribution against the swatch, coverage and heights.
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -75,10 +74,8 @@ struct InspectReport {
     double radius_p10 = 0.0, radius_p90 = 0.0;
     double median_aspect = 1.0, aspect_p90 = 1.0;  //!< longest over shortest axis of a ring
     std::optional<double> radius_ratio;    //!< with a swatch: median radius / the swatch's
-    //! With a swatch, a base and a scale: the radius the scale asks for, and p10, median, p90 of
-    //! each ring's radius over it.
+    //! With a swatch, a base and a scale: the radius the scale asks for.
     std::optional<double> asked_radius;
-    std::array<double, 3> over_asked{};
     std::optional<double> expected_rings;  //!< with a swatch and a plane or base: its ring density x area
   };
   std::optional<Rings> rings;

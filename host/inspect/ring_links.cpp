@@ -30,6 +30,11 @@ double segment_pair_term(const Vec3& a1, const Vec3& a2, const Vec3& b1, const V
   return side > 0.0 ? omega : (side < 0.0 ? -omega : 0.0);
 }
 
+// The q-quantile of sorted, non-empty values: the one nearest rank q x (n - 1).
+double nearest_rank(const std::vector<double>& sorted, double q) {
+  return sorted[static_cast<size_t>(std::lround(q * static_cast<double>(sorted.size() - 1)))];
+}
+
 }  // namespace
 
 std::vector<RingCentreLine> ring_centre_lines(const TriMesh& mesh, const std::vector<int32_t>& face_element,
@@ -119,14 +124,13 @@ RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_eleme
   }
   result.median_radius = median(radii);
   std::sort(radii.begin(), radii.end());
-  const auto at = [&](double q) { return radii[static_cast<size_t>(std::lround(q * static_cast<double>(radii.size() - 1)))]; };
-  result.radius_p10 = at(0.1);
-  result.radius_p90 = at(0.9);
+  result.radius_p10 = nearest_rank(radii, 0.1);
+  result.radius_p90 = nearest_rank(radii, 0.9);
   std::vector<double> aspects;
   for (const RingCentreLine& line : lines) aspects.push_back(line.aspect);
   result.median_aspect = median(aspects);
   std::sort(aspects.begin(), aspects.end());
-  result.aspect_p90 = aspects[static_cast<size_t>(std::lround(0.9 * static_cast<double>(aspects.size() - 1)))];
+  result.aspect_p90 = nearest_rank(aspects, 0.9);
   // Centre lines that can meet have centres within the sum of their radii; a margin covers the
   // binning's inward bias.
   const double margin = 0.25 * result.median_radius;
