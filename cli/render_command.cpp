@@ -1,10 +1,15 @@
-// `meshquilt render MESH -o OUT.png [--view V] [--mode M] [--size WxH] [--up A]`: a preview image.
+// `meshquilt render MESH -o OUT.png [--view V] [--mode M] [--size WxH] [--up A] [--around X,Y,Z
+// [--radius R]]`: a preview image.
 #include "render_command.h"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cstdio>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
 #include <memory>
 
 #include "atomic_file.h"
@@ -23,7 +28,25 @@ struct RenderArgs {
   std::string mode = "shaded";
   std::string size = "1024x768";
   std::string up = "z";
+  std::string around;
+  double radius = 0.0;
+  bool radius_given = false;
 };
+
+// "X,Y,Z": three finite numbers.
+Vec3 parse_point(const std::string& text) {
+  double xyz[3];
+  const char* at = text.data();
+  const char* end = text.data() + text.size();
+  for (int k = 0; k < 3; ++k) {
+    const auto [ptr, ec] = std::from_chars(at, end, xyz[k]);
+    const bool last = k == 2;
+    if (ec != std::errc() || !std::isfinite(xyz[k]) || (last ? ptr != end : (ptr == end || *ptr != ',')))
+      throw InputError("--around: expected a point X,Y,Z, got '" + text + "'", ErrorKind::invalid_option);
+    at = ptr + 1;
+  }
+  return {xyz[0], xyz[1], xyz[2]};
+}
 
 void check_png_extension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
@@ -47,7 +70,32 @@ void run_render(const RenderArgs& args) {
   const std::filesystem::path output(args.output);
   check_png_extension(output);
   check_writable(output);
+  if (args.radius_given && args.around.empty())
+    throw InputError("--radius: needs --around X,Y,Z", ErrorKind::invalid_option);
+  if (!args.around.empty()) options.close_up = CloseUp{parse_point(args.around), args.radius_given ? args.radius : 0.0};
+  if (options.close_up && args.radius_given) validate_render_options(options);
   const TriMesh mesh = read_mesh(args.mesh);
+  if (options.close_up && !args.radius_given) {
+    // A tenth of the mesh's diagonal, by default.
+    Vec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Tri& t : mesh.triangles)
+      for (int32_t v : t) {
+        lo = glm::min(lo, mesh.positions[v]);
+        hi = glm::max(hi, mesh.positions[v]);
+      }
+    if (!mesh.triangles.empty()) options.close_up->radius = 0.1 * glm::length(hi - lo);
+  }
+  if (options.close_up) {
+    // Checked here to name the file; the close-up's own elements are picked again when drawn.
+    try {
+      close_up_elements(mesh, *options.close_up);
+    } catch (const InputError&) {
+      char radius[32];
+      std::snprintf(radius, sizeof radius, "%g", options.close_up->radius);
+      throw InputError(args.mesh + ": no element within " + radius + " of --around " + args.around,
+                       ErrorKind::invalid_mesh);
+    }
+  }
   write_preview(mesh, output, options);
   std::printf("wrote %s: %dx%d, %zu faces, %s view, %s\n", output.string().c_str(), options.width,
               options.height, mesh.num_faces(), args.view.c_str(), args.mode.c_str());
@@ -93,6 +141,11 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--up", args->up, "x|y|z: the mesh's axis shown upward (y for y-up scans such as bunny.off)")
       ->capture_default_str();
+  cmd->add_option("--around", args->around,
+                  "X,Y,Z: a close-up of the elements within --radius of this point (such as a cone of the "
+                  "stats' cone_points), seen from outside along the line to the mesh's centre");
+  cmd->add_option("--radius", args->radius, "with --around: how far from the point (default: a tenth of the mesh's diagonal)")
+      ->each([args](const std::string&) { args->radius_given = true; });
   cmd->callback([args] { run_render(*args); });
 }
 

@@ -32,13 +32,15 @@ Vec3 view_direction(View view) {
   return -to_camera;
 }
 
-OrthographicCamera frame_box(const Vec3& lo, const Vec3& hi, View view, int width, int height,
-                             double margin) {
+namespace {
+
+OrthographicCamera frame(const Vec3& lo, const Vec3& hi, const Vec3& forward, const Vec3& world_up, int width,
+                         int height, double margin) {
   OrthographicCamera camera;
   camera.width = width;
   camera.height = height;
-  camera.forward = view_direction(view);
-  camera.right = glm::normalize(glm::cross(camera.forward, world_up(view)));
+  camera.forward = forward;
+  camera.right = glm::normalize(glm::cross(camera.forward, world_up));
   camera.up = glm::cross(camera.right, camera.forward);
   // A box projects symmetrically about its centre, so the centre is the image centre.
   camera.center = 0.5 * (lo + hi);
@@ -55,6 +57,18 @@ OrthographicCamera frame_box(const Vec3& lo, const Vec3& hi, View view, int widt
   // back keeps the ray origins in front of it, with room for rounding.
   camera.depth = std::max(glm::length(hi - lo), 1.0 * camera.pixel_size);
   return camera;
+}
+
+}  // namespace
+
+OrthographicCamera frame_box(const Vec3& lo, const Vec3& hi, View view, int width, int height, double margin) {
+  return frame(lo, hi, view_direction(view), world_up(view), width, height, margin);
+}
+
+OrthographicCamera frame_box_along(const Vec3& lo, const Vec3& hi, const Vec3& forward, int width, int height,
+                                   double margin) {
+  const bool vertical = std::abs(forward.z) > std::cos(std::numbers::pi / 180.0);
+  return frame(lo, hi, forward, vertical ? Vec3(0, 1, 0) : Vec3(0, 0, 1), width, height, margin);
 }
 
 }  // namespace meshquilt

@@ -43,4 +43,9 @@ Vec3 view_direction(View view);
 //! \pre lo <= hi, width and height >= 1, 0 <= margin < 0.5.
 OrthographicCamera frame_box(const Vec3& lo, const Vec3& hi, View view, int width, int height, double margin);
 
+//! As frame_box, looking along the unit vector `forward`, with +z up in the image (+y when
+//! `forward` is within a degree of the z axis).
+OrthographicCamera frame_box_along(const Vec3& lo, const Vec3& hi, const Vec3& forward, int width, int height,
+                                   double margin);
+
 }  // namespace meshquilt

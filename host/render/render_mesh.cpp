@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <string>
+#include <unordered_set>
 
 #include "core/error.h"
 #include "render/element_palette.h"
@@ -83,6 +84,8 @@ void bounding_box(const TriMesh& mesh, Vec3* lo, Vec3* hi) {
 
 uint8_t to_byte(double c) { return static_cast<uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); }
 
+RgbImage render_framed(const TriMesh& mesh, const RenderOptions& options, const OrthographicCamera& camera);
+
 }  // namespace
 
 void validate_render_options(const RenderOptions& options) {
@@ -95,6 +98,9 @@ void validate_render_options(const RenderOptions& options) {
                      ErrorKind::invalid_option);
   if (options.up < 0 || options.up > 2)
     throw InputError("{up}: expected x, y or z", ErrorKind::invalid_option);
+  if (options.close_up && !(options.close_up->radius > 0.0 && std::isfinite(options.close_up->radius)))
+    throw InputError("{radius}: expected a positive distance, got " + std::to_string(options.close_up->radius),
+                     ErrorKind::invalid_option);
   if (!(options.margin >= 0.0 && options.margin <= 0.45))
     throw InputError("render margin: expected 0 to 0.45, got " + std::to_string(options.margin),
                      ErrorKind::invalid_option);
@@ -128,9 +134,11 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
     // A rotation carries the up axis to z (a quarter turn about x for y, a cyclic turn for x): for
     // y up, the model's front (+z) comes to face the front view's camera (-y).
     TriMesh turned = mesh;
-    for (Vec3& p : turned.positions) p = options.up == 1 ? Vec3(p.x, -p.z, p.y) : Vec3(p.y, p.z, p.x);
+    const auto turn = [&](const Vec3& p) { return options.up == 1 ? Vec3(p.x, -p.z, p.y) : Vec3(p.y, p.z, p.x); };
+    for (Vec3& p : turned.positions) p = turn(p);
     RenderOptions upright = options;
     upright.up = 2;
+    if (upright.close_up) upright.close_up->point = turn(upright.close_up->point);
     return render_mesh(turned, upright);
   }
   if (options.mode == RenderMode::colors && mesh.colors.size() != mesh.positions.size())
@@ -138,8 +146,46 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
                      ErrorKind::invalid_option);
   Vec3 lo, hi;
   bounding_box(mesh, &lo, &hi);
-  const OrthographicCamera camera =
-      frame_box(lo, hi, options.view, options.width, options.height, options.margin);
+  if (options.close_up) {
+    const TriMesh near = close_up_elements(mesh, *options.close_up);
+    Vec3 near_lo, near_hi;
+    bounding_box(near, &near_lo, &near_hi);
+    const Vec3 to_centre = 0.5 * (lo + hi) - options.close_up->point;
+    RenderOptions framed = options;
+    framed.close_up.reset();
+    const double length = glm::length(to_centre);
+    const Vec3 forward = length > 1e-12 * glm::length(hi - lo) ? to_centre / length : view_direction(options.view);
+    return render_framed(near, framed, frame_box_along(near_lo, near_hi, forward, options.width, options.height,
+                                                       options.margin));
+  }
+  return render_framed(mesh, options, frame_box(lo, hi, options.view, options.width, options.height, options.margin));
+}
+
+TriMesh close_up_elements(const TriMesh& mesh, const CloseUp& close_up) {
+  const std::vector<int32_t> ids = face_element_ids(mesh);
+  std::unordered_set<int32_t> near;
+  const double r2 = close_up.radius * close_up.radius;
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int32_t v : mesh.triangles[f]) {
+      const Vec3 d = mesh.positions[v] - close_up.point;
+      if (glm::dot(d, d) <= r2) near.insert(ids[f]);
+    }
+  TriMesh result;
+  result.positions = mesh.positions;
+  if (mesh.colors.size() == mesh.positions.size()) result.colors = mesh.colors;
+  for (size_t f = 0; f < mesh.num_faces(); ++f)
+    if (near.count(ids[f])) {
+      result.triangles.push_back(mesh.triangles[f]);
+      result.elements.push_back(ids[f]);
+    }
+  if (result.triangles.empty())
+    throw InputError("render: no element comes within " + std::to_string(close_up.radius) + " of the close-up point");
+  return result;
+}
+
+namespace {
+
+RgbImage render_framed(const TriMesh& mesh, const RenderOptions& options, const OrthographicCamera& camera) {
   const Lights lights = lights_for(camera);
   const std::vector<Vec3> normals = face_normals(mesh);
   const std::vector<Vec3> colors = face_colors(mesh, options.mode, options.plain_element);
@@ -177,5 +223,7 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
   });
   return image;
 }
+
+}  // namespace
 
 }  // namespace meshquilt

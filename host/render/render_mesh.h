@@ -3,6 +3,7 @@
 //! hit shaded with Lambert's law under a key light and a headlight plus ambient light, on a
 //! light background. No GPU and no display are needed.
 
+#include <optional>
 #include <string>
 
 #include "mesh/tri_mesh.h"
@@ -21,6 +22,13 @@ enum class RenderMode {
 //! Largest accepted image side, in pixels.
 inline constexpr int kMaxImageSide = 8192;
 
+//! A close-up: the elements with a vertex within `radius` of `point`, seen along the line from
+//! `point` to the centre of the whole mesh's bounding box (from outside a convex base).
+struct CloseUp {
+  Vec3 point{0.0};
+  double radius = 0.0;
+};
+
 struct RenderOptions {
   int width = 1024;           //!< image width in pixels, 1..kMaxImageSide
   int height = 768;           //!< image height in pixels, 1..kMaxImageSide
@@ -34,6 +42,7 @@ struct RenderOptions {
   //! under its texture); -1: none.
   int32_t plain_element = -1;
   int up = 2;  //!< the mesh's axis (0 x, 1 y, 2 z) shown upward, as z is: 1 for y-up scans
+  std::optional<CloseUp> close_up;  //!< replaces `view` and the framing on the whole mesh
 };
 
 //! Parses `--view top|oblique|front|side`. \throw InputError(invalid_option) naming --view.
@@ -47,7 +56,7 @@ int parse_up_axis(const std::string& text);
 
 //! \throw InputError(invalid_option) naming `--size WxH` when a side is outside
 //!        1..kMaxImageSide, or naming the option when samples is outside 1..4 or margin outside
-//!        [0, 0.45].
+//!        [0, 0.45], or naming --radius when a close-up's radius is not positive and finite.
 void validate_render_options(const RenderOptions& options);
 
 //! Renders `mesh` framed by its bounding box (frame_box) in options.width x options.height
@@ -56,8 +65,14 @@ void validate_render_options(const RenderOptions& options);
 //! (face_element_ids). Rows are rendered in parallel; the image does not depend on the thread
 //! count. Channels of a hit are capped at 240, so with the default background a pixel whose
 //! rays all hit faces never takes the background colour.
-//! \throw InputError(invalid_mesh) when the mesh has no faces; InputError(invalid_option) as
+//! With a close-up, only its elements are drawn, framed on their box.
+//! \throw InputError(invalid_mesh) when the mesh has no faces, or no element comes within a
+//!        close-up's radius; InputError(invalid_option) as
 //!        validate_render_options, or for RenderMode::colors on a mesh without vertex colours; DeviceError/SolverError from Embree.
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options = {});
+
+//! The faces of the elements (face_element_ids) with a vertex within close_up.radius of
+//! close_up.point, each keeping its element id. \throw InputError(invalid_mesh) when there are none.
+TriMesh close_up_elements(const TriMesh& mesh, const CloseUp& close_up);
 
 }  // namespace meshquilt

@@ -138,6 +138,8 @@ class SurfaceDriver {
     stats_.on_lattice = layout->layout().on_lattice;
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();
+    stats_.cone_points.clear();
+    for (const auto& [face, point] : layout->cone_points()) stats_.cone_points.push_back(point);
     return layout;
   }
 

@@ -309,6 +309,49 @@ TEST(ElementsMode, PaletteIsSpreadAndDeterministic) {
   EXPECT_TRUE(std::isfinite(negative.r));
 }
 
+TEST(CloseUp, KeepsWholeElementsWithAVertexWithinTheRadius) {
+  TriMesh mesh;
+  add_box(mesh, {0, 0, 0}, {1, 1, 1}, 3);
+  add_box(mesh, {4, 0, 0}, {5, 1, 1}, 9);
+  add_box(mesh, {8, 0, 0}, {9, 1, 1}, 4);
+  // (5.5, 0.5, 0.5): the middle box's corners lie sqrt(0.75) away, the last box's sqrt(6.5).
+  const TriMesh near = close_up_elements(mesh, {{5.5, 0.5, 0.5}, 1.0});
+  EXPECT_EQ(near.num_faces(), 12u);
+  for (int32_t id : near.elements) EXPECT_EQ(id, 9);
+  EXPECT_EQ(close_up_elements(mesh, {{5.5, 0.5, 0.5}, 2.6}).num_faces(), 24u);
+  EXPECT_THROW(close_up_elements(mesh, {{5.5, 0.5, 0.5}, 0.8}), InputError);
+}
+
+TEST(CloseUp, LooksAtThePointFromOutside) {
+  // A row of boxes along x; the last one's +x faces (id 7) face away from the row's centre, its
+  // other faces are id 8. Seen from outside along -x, only id 7 shows.
+  TriMesh mesh;
+  add_box(mesh, {0, 0, 0}, {1, 1, 1}, 1);
+  add_box(mesh, {4, 0, 0}, {5, 1, 1}, 8);
+  for (size_t f = 12; f < mesh.num_faces(); ++f) {
+    bool on_plus_x = true;
+    for (int32_t v : mesh.triangles[f]) on_plus_x = on_plus_x && mesh.positions[v].x == 5.0;
+    if (on_plus_x) mesh.elements[f] = 7;
+  }
+  RenderOptions options;
+  options.width = 120;
+  options.height = 90;
+  options.mode = RenderMode::elements;
+  options.samples = 1;
+  options.close_up = CloseUp{{5.2, 0.5, 0.5}, 1.5};
+  const std::set<Rgb8> colors = foreground_colors(render_mesh(mesh, options), options.background);
+  ASSERT_EQ(colors.size(), 1u);
+  // The face's colour at the headlight's full strength differs from element 8's and element 1's.
+  options.close_up->point = Vec3(-0.2, 0.5, 0.5);  // now from -x: box 1's -x face
+  const std::set<Rgb8> other = foreground_colors(render_mesh(mesh, options), options.background);
+  ASSERT_EQ(other.size(), 1u);
+  EXPECT_NE(*colors.begin(), *other.begin());
+  // The same picture as the -x face of box 1 alone, coloured as id 1.
+  TriMesh alone;
+  add_box(alone, {0, 0, 0}, {1, 1, 1}, 1);
+  EXPECT_EQ(render_mesh(alone, options).rgb, render_mesh(mesh, options).rgb);
+}
+
 TEST(ShadedMode, FacesAreTwoSidedAndLitByTheirSlope) {
   RenderOptions options;
   options.width = 64;
@@ -435,8 +478,21 @@ TEST_F(RenderCli, BadOptions) {
   expect_failure(mesh + " --view below", dir_ / "out.png", 6, "--view");
   expect_failure(mesh + " --mode wireframe", dir_ / "out.png", 6, "--mode");
   expect_failure(mesh + " --up w", dir_ / "out.png", 6, "--up");
+  expect_failure(mesh + " --around 1,2", dir_ / "out.png", 6, "--around");
+  expect_failure(mesh + " --around 1,2,x", dir_ / "out.png", 6, "--around");
+  expect_failure(mesh + " --radius 0.5", dir_ / "out.png", 6, "--radius");
+  expect_failure(mesh + " --around 1,0.5,0.3 --radius -1", dir_ / "out.png", 6, "--radius");
+  expect_failure(mesh + " --around 50,50,50 --radius 0.5", dir_ / "out.png", 5, "boxes.ply");
   expect_failure(mesh, dir_ / "out.jpg", 4, "out.jpg");
   expect_failure(mesh, dir_ / "missing" / "out.png", 7, "out.png");
+}
+
+TEST_F(RenderCli, WritesACloseUp) {
+  const fs::path output = dir_ / "near.png";
+  const test::CliResult r = test::run_cli("render '" + good_.string() + "' --around 2.6,0.5,0.15 --radius 0.6 --size 64x48 -o '" +
+                                          output.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(output));
 }
 
 TEST_F(RenderCli, WritesAPngOfTheRequestedSize) {
