@@ -78,6 +78,7 @@ void add_curved_stats(const SynthRequest& request, const SurfaceQuiltStats& stat
   out["cones"] = stats.cones;
   out["cone_points"] = nlohmann::json::array();
   for (const Vec3& p : stats.cone_points) out["cone_points"].push_back({p.x, p.y, p.z});
+  out["cone_indices"] = stats.cone_indices;
   out["outside_vertices"] = stats.outside_vertices;
   out["shell_height"] = stats.shell_height;
   out["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;

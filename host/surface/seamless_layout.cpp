@@ -425,7 +425,10 @@ SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& fi
   DirectionField combed{field.symmetry, layout.axis};
   const std::vector<int> index = field_indices(base, combed);
   for (size_t v = 0; v < index.size(); ++v)
-    if (index[v] != 0) layout.cones.push_back(static_cast<int32_t>(v));
+    if (index[v] != 0) {
+      layout.cones.push_back(static_cast<int32_t>(v));
+      layout.cone_indices.push_back(index[v]);
+    }
   cut_open(base, tree, layout);
   const int32_t wedges = make_wedges(base, layout);
   solve_layout(base, layout, wedges, 1.0, nullptr);

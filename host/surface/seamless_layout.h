@@ -29,6 +29,7 @@ struct SeamlessLayout {
   std::vector<int32_t> corner_wedge;         //!< #F x 3: the layout vertex of each face corner
   std::vector<glm::dvec2> uv;                //!< #layout vertices, base units
   std::vector<int32_t> cones;                //!< vertices where the field has a nonzero index
+  std::vector<int> cone_indices;             //!< each cone's index, in units of 1 / symmetry
   int flipped_faces = 0;                     //!< faces mirrored in the layout (near cones)
   bool on_lattice = false;                   //!< seams continue by periods of a lattice
 };

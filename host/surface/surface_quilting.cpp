@@ -140,6 +140,7 @@ class SurfaceDriver {
     stats_.cones = layout->cones();
     stats_.cone_points.clear();
     for (const auto& [face, point] : layout->cone_points()) stats_.cone_points.push_back(point);
+    stats_.cone_indices = layout->layout().cone_indices;
     return layout;
   }
 

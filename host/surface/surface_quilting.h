@@ -55,6 +55,7 @@ struct SurfaceQuiltStats : QuiltStats {
   int field_symmetry = 0;      //!< n of the layout's field (0 without a layout)
   int cones = 0;               //!< singular vertices of the layout's field
   std::vector<Vec3> cone_points;  //!< where they are on the base
+  std::vector<int> cone_indices;  //!< the field's index at each, in units of 1 / field_symmetry
   int outside_vertices = 0;    //!< vertices placed outside their patch, put on its nearest face
   double shell_height = 0.0;   //!< base units
   double diagonal = 0.0;       //!< base bounding-box diagonal

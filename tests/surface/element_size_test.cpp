@@ -1,9 +1,9 @@
 // Rings the size asked over scanned bases (#65's job: the 6 x 5 mail of 16 x 6 segments at scale
 // 0.08): the median ring, measured from the output alone by `inspect --rings` (centre lines, not
 // the layout), near the radius the scale asks, the stats' own measure of whole copies agreeing,
-// the mail one linked piece, and the cones the stats list on the base. These bases leave the
-// median ring 7-8% small (decision 0056: no normalization of the layout's scale tried holds both
-// this job and coarser ones to 5%).
+// the mail one linked piece, and the cones the stats list on the base with indices that sum as
+// the base's topology asks. These bases leave the median ring 7-8% small (decision 0056: no
+// normalization of the layout's scale tried holds both this job and coarser ones to 5%).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -52,6 +52,12 @@ TEST_P(ElementSize, TheMedianRingIsTheSizeAsked) {
   const nlohmann::json report = nlohmann::json::parse(test::read_file(stats));
   const nlohmann::json& cones = report.at("cone_points");
   EXPECT_EQ(cones.size(), report.at("cones").get<size_t>());
+  // Poincare-Hopf over these closed genus-0 bases: the indices sum to 2 in whole turns.
+  const auto indices = report.at("cone_indices").get<std::vector<int>>();
+  EXPECT_EQ(indices.size(), cones.size());
+  int sum = 0;
+  for (int k : indices) sum += k;
+  EXPECT_EQ(sum, 2 * report.at("field_symmetry").get<int>());
   const TriMesh mesh = read_mesh(base);
   for (const auto& c : cones) {
     const Vec3 p(c[0].get<double>(), c[1].get<double>(), c[2].get<double>());
