@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "core/error.h"
+
 #include "core/constants.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
@@ -14,6 +16,11 @@
 
 namespace meshquilt {
 namespace {
+
+// Rounds of moving each placed cone to where the others leave the scale lowest; a new placement
+// is kept where it narrows the scale's spread by this factor.
+constexpr int kSettleRounds = 8;
+constexpr double kRelocationGain = 0.995;
 
 
 double corner_angle(const TriMesh& mesh, const Tri& t, int k) {
@@ -39,34 +46,57 @@ bool closed_sphere(const BaseSurface& base) {
 
 }  // namespace
 
+namespace {
+
+// The cotan Laplacian of a closed base, factored once for every curvature asked of it.
+class ConeMetric {
+ public:
+  explicit ConeMetric(const BaseSurface& base) : defect_(angle_defects(base.mesh)) {
+    const TriMesh& mesh = base.mesh;
+    const auto n = static_cast<Eigen::Index>(mesh.num_vertices());
+    std::vector<Eigen::Triplet<double>> triplets;
+    double largest = 0.0;
+    for (const Tri& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const double w = half_cotangent(mesh, t, k);
+        const int32_t i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+        triplets.emplace_back(i, i, w);
+        triplets.emplace_back(j, j, w);
+        triplets.emplace_back(i, j, -w);
+        triplets.emplace_back(j, i, -w);
+        largest = std::max(largest, std::abs(w));
+      }
+    // phi is defined up to a constant: a faint pull to 0 picks one, the mean taken out after.
+    for (Eigen::Index v = 0; v < n; ++v) triplets.emplace_back(v, v, 1e-9 * std::max(largest, 1e-300));
+    Eigen::SparseMatrix<double> laplacian(n, n);
+    laplacian.setFromTriplets(triplets.begin(), triplets.end());
+    factor_.compute(laplacian);
+    if (factor_.info() != Eigen::Success) throw SolverError("cone metric: factorization failed");
+  }
+
+  //! phi solving L phi = K_hat - K, mean 0.
+  std::vector<double> scale(const std::vector<double>& target_curvature) const {
+    const auto n = static_cast<Eigen::Index>(defect_.size());
+    Eigen::VectorXd rhs(n);
+    for (Eigen::Index v = 0; v < n; ++v) rhs(v) = target_curvature[v] - defect_[v];
+    const Eigen::VectorXd phi = factor_.solve(rhs);
+    if (factor_.info() != Eigen::Success || !phi.allFinite()) throw SolverError("cone metric: solve failed");
+    std::vector<double> result(phi.data(), phi.data() + n);
+    double mean = 0.0;
+    for (double x : result) mean += x / static_cast<double>(n);
+    for (double& x : result) x -= mean;
+    return result;
+  }
+
+ private:
+  std::vector<double> defect_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+};
+
+}  // namespace
+
 std::vector<double> cone_metric_scale(const BaseSurface& base, const std::vector<double>& target_curvature) {
-  const TriMesh& mesh = base.mesh;
-  const auto n = static_cast<Eigen::Index>(mesh.num_vertices());
-  const std::vector<double> defect = angle_defects(mesh);
-  Eigen::MatrixXd rhs(n, 1);
-  for (Eigen::Index v = 0; v < n; ++v) rhs(v, 0) = target_curvature[v] - defect[v];
-  std::vector<Eigen::Triplet<double>> triplets;
-  double largest = 0.0;
-  for (const Tri& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const double w = half_cotangent(mesh, t, k);
-      const int32_t i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-      triplets.emplace_back(i, i, w);
-      triplets.emplace_back(j, j, w);
-      triplets.emplace_back(i, j, -w);
-      triplets.emplace_back(j, i, -w);
-      largest = std::max(largest, std::abs(w));
-    }
-  // phi is defined up to a constant: a faint pull to 0 picks the one of mean 0.
-  for (Eigen::Index v = 0; v < n; ++v) triplets.emplace_back(v, v, 1e-9 * std::max(largest, 1e-300));
-  Eigen::SparseMatrix<double> L(n, n);
-  L.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::MatrixXd phi = solve_positive_definite(L, rhs, "cone metric");
-  std::vector<double> result(static_cast<size_t>(n));
-  double mean = 0.0;
-  for (Eigen::Index v = 0; v < n; ++v) mean += (result[v] = phi(v, 0)) / static_cast<double>(n);
-  for (double& x : result) x -= mean;
-  return result;
+  return ConeMetric(base).scale(target_curvature);
 }
 
 double scale_spread(const BaseSurface& base, const std::vector<double>& phi) {
@@ -127,10 +157,44 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
     }
     return best;
   };
+  const ConeMetric metric(base);
   std::vector<int32_t> cones;
   while (static_cast<int>(cones.size()) < count)
-    cones.push_back(lowest(cone_metric_scale(base, target(cones)), cones));
-  const std::vector<double> phi = cone_metric_scale(base, target(cones));
+    cones.push_back(lowest(metric.scale(target(cones)), cones));
+  std::vector<double> phi = metric.scale(target(cones));
+  // Greedy placement can end balanced but uneven, as a square on a sphere's great circle, which
+  // no single cone's move leaves. So: two cones taken out and put back greedily, then each cone
+  // in turn moved to where the others leave the scale lowest until none moves; kept where that
+  // evens the scale (the square opens to a tetrahedron).
+  double spread = scale_spread(base, phi);
+  const auto settle = [&](std::vector<int32_t> at) {
+    for (int round = 0; round < kSettleRounds; ++round) {
+      bool moved = false;
+      for (size_t i = 0; i < at.size(); ++i) {
+        std::vector<int32_t> rest = at;
+        rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
+        const int32_t v = lowest(metric.scale(target(rest)), rest);
+        moved = moved || v != at[i];
+        at[i] = v;
+      }
+      if (!moved) break;
+    }
+    return at;
+  };
+  for (size_t i = 0; i < cones.size(); ++i)
+    for (size_t j = i + 1; j < cones.size(); ++j) {
+      std::vector<int32_t> rest;
+      for (size_t k = 0; k < cones.size(); ++k)
+        if (k != i && k != j) rest.push_back(cones[k]);
+      while (rest.size() < cones.size()) rest.push_back(lowest(metric.scale(target(rest)), rest));
+      std::vector<int32_t> tried = settle(std::move(rest));
+      std::vector<double> tried_phi = metric.scale(target(tried));
+      const double tried_spread = scale_spread(base, tried_phi);
+      if (!(tried_spread < kRelocationGain * spread)) continue;
+      cones = std::move(tried);
+      phi = std::move(tried_phi);
+      spread = tried_spread;
+    }
 
   // Parallel transport in the scaled metric: the surface's own across each edge, turned by the
   // metric's rotation, minus the cotan-weighted change of phi along the edge.

@@ -28,8 +28,9 @@ std::optional<double> field_scale_spread(const BaseSurface& base, const Directio
 
 //! The field of symmetry n parallel in the cone metric, its 2n cones of index 1 / n placed
 //! greedily, each at the lowest scale left by the cones so far with the rest of the curvature
-//! spread evenly (on a sphere: two opposite pairs a quarter turn apart), turned so that
-//! `root_direction` holds on face 0.
+//! spread evenly, then moved two at a time while that narrows the scale's spread (on a sphere:
+//! from two opposite pairs a quarter turn apart to about a tetrahedron's corners), turned so
+//! that `root_direction` holds on face 0.
 //! std::nullopt where the base is not one closed component of genus 0.
 //! \throw SolverError when a solve fails.
 std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction);

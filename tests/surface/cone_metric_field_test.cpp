@@ -79,6 +79,26 @@ TEST(ConeMetricField, ItsSingularitiesAreItsConesOnASphere) {
   }
 }
 
+TEST(ConeMetricField, FourHalfTurnConesSitNearATetrahedronsCornersOnASphere) {
+  // Four cones of a half turn scale a round sphere most evenly at a regular tetrahedron's
+  // corners, 109.5 degrees apart; greedy placement alone puts them on a great circle, 90 and 180.
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  const auto field = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0));
+  ASSERT_TRUE(field);
+  std::vector<Vec3> cones;
+  const std::vector<int> index = field_indices(base, *field);
+  for (size_t v = 0; v < index.size(); ++v)
+    if (index[v] != 0) cones.push_back(glm::normalize(sphere.positions[v]));
+  ASSERT_EQ(cones.size(), 4u);
+  for (size_t i = 0; i < cones.size(); ++i)
+    for (size_t j = i + 1; j < cones.size(); ++j) {
+      const double degrees = std::acos(glm::dot(cones[i], cones[j])) * 180.0 / std::numbers::pi;
+      EXPECT_GT(degrees, 95.0) << i << ", " << j;
+      EXPECT_LT(degrees, 125.0) << i << ", " << j;
+    }
+}
+
 TEST(ConeMetricField, SpreadsScaleLessThanTheSmoothestFieldPulledToAnAxis) {
   const TriMesh sphere = test::icosphere(3);
   const BaseSurface base(sphere);
