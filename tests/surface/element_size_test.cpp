@@ -76,6 +76,42 @@ TEST_P(ElementSize, TheMedianRingIsTheSizeAsked) {
     EXPECT_LT(nearest, 1e-6 * report.at("shell_height").get<double>() / report.at("shell_height_share").get<double>())
         << c.dump();
   }
+  std::filesystem::remove_all(dir);
+}
+
+// #65's weave: the default plain weave over the bunny at the same scale still runs on across
+// patches, and no yarn leaves the shell (the base to the shell height above it) by more than its
+// own radius.
+TEST(WeaveOverABase, YarnsContinueAndStayInTheShell) {
+  const auto base = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/bunny.off";
+  if (!std::filesystem::exists(base)) GTEST_SKIP() << base << " not found";
+  const auto dir = test::scratch_dir("element_size_weave");
+  const auto swatch = dir / "weave.ply", out = dir / "out.ply", stats = dir / "stats.json";
+  const auto made = test::run_cli("swatch weave -o '" + swatch.string() + "'");
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  const auto run = test::run_cli("synth --swatch '" + swatch.string() + "' --base '" + base.string() +
+                                 "' --scale 0.08 --backend cpu --progress none --stats '" + stats.string() + "' -o '" +
+                                 out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto inspect = test::run_cli("inspect '" + out.string() + "' --yarns --swatch '" + swatch.string() +
+                                     "' --base '" + base.string() + "' --json 2>/dev/null");
+  ASSERT_EQ(inspect.exit_code, 0) << inspect.output;
+  const nlohmann::json report = nlohmann::json::parse(inspect.output);
+  const nlohmann::json synth = nlohmann::json::parse(test::read_file(stats));
+  const double shell = synth.at("shell_height").get<double>();
+  const double diagonal = shell / synth.at("shell_height_share").get<double>();
+  const double radius = report.at("yarns").at("median_radius").get<double>();
+  // Heights are reported as shares of the base's diagonal.
+  const double highest = report.at("height_max").get<double>() * diagonal;
+  const double lowest = report.at("height_min").get<double>() * diagonal;
+  std::printf("weave over the bunny: %d yarns, %.2f swatch lengths; heights %.3f to %.3f shells, yarn radius %.3f\n",
+              report.at("yarns").at("yarns").get<int>(), report.at("yarns").at("in_swatch_lengths").get<double>(),
+              lowest / shell, highest / shell, radius / shell);
+  EXPECT_GE(report.at("yarns").at("in_swatch_lengths").get<double>(), 3.0);
+  EXPECT_LE(highest, shell + radius);
+  EXPECT_GE(lowest, -radius);
+  EXPECT_GE(report.at("coverage").get<double>(), 0.95);
+  std::filesystem::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bases, ElementSize,
