@@ -67,21 +67,20 @@ if [ -f "$bunny" ]; then
   "$meshquilt" embed --embed normal --texture "$work/thick.mqt" --base "$bunny" -o "$work/thick_normal.ply" >/dev/null
   "$meshquilt" render "$work/thick_shell.ply" --mode elements --size 800x600 -o docs/images/bunny_thick_shell.png
   "$meshquilt" render "$work/thick_normal.ply" --mode elements --size 800x600 -o docs/images/bunny_thick_normal.png
-  # Ring size over the bunny (#65's job) and the mail round its cones: the first cone listed and
-  # the midpoint of the closest two.
+  # Ring size over the bunny (#65's job) and the mail round a cone of each sign.
   "$meshquilt" swatch chainmail --rows 6 --columns 5 --ring-segments 16 --wire-segments 6 -o "$work/mail65.ply" >/dev/null
   "$meshquilt" synth --swatch "$work/mail65.ply" --base "$bunny" --scale 0.08 --seed 1 --backend cpu --progress none \
     --stats "$work/mail65.json" -o "$work/bunny_mail65.ply" >/dev/null
-  "$meshquilt" render "$work/bunny_mail65.ply" --up y --view side --size 800x640 -o docs/images/bunny_ring_size.png
-  read -r first closest < <(python3 - "$work/mail65.json" <<'PY'
-import itertools, json, math, sys
-cones = json.load(open(sys.argv[1]))["cone_points"]
-a, b = min(itertools.combinations(cones, 2), key=lambda p: math.dist(*p))
-print(",".join(map(str, cones[0])), ",".join(str((x + y) / 2) for x, y in zip(a, b)))
+  "$meshquilt" render "$work/bunny_mail65.ply" --up y --view front --size 800x640 -o docs/images/bunny_ring_size.png
+  read -r plus minus < <(python3 - "$work/mail65.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+at = lambda sign: ",".join(map(str, next(p for p, k in zip(s["cone_points"], s["cone_indices"]) if k * sign > 0)))
+print(at(1), at(-1))
 PY
 )
-  "$meshquilt" render "$work/bunny_mail65.ply" --up y --around "$first" --radius 0.02 --size 640x512 \
-    -o docs/images/bunny_cone.png
-  "$meshquilt" render "$work/bunny_mail65.ply" --up y --around "$closest" --radius 0.02 --size 640x512 \
-    -o docs/images/bunny_cone_pair.png
+  "$meshquilt" render "$work/bunny_mail65.ply" --up y --around "$plus" --radius 0.02 --size 640x512 \
+    -o docs/images/bunny_cone_plus.png
+  "$meshquilt" render "$work/bunny_mail65.ply" --up y --around "$minus" --radius 0.02 --size 640x512 \
+    -o docs/images/bunny_cone_minus.png
 fi
