@@ -7,9 +7,6 @@
 #include <charconv>
 #include <cstdio>
 #include <cmath>
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-#include <limits>
 #include <memory>
 
 #include "atomic_file.h"
@@ -72,26 +69,18 @@ void run_render(const RenderArgs& args) {
   check_writable(output);
   if (args.radius_given && args.around.empty())
     throw InputError("--radius: needs --around X,Y,Z", ErrorKind::invalid_option);
+  if (args.radius_given && !(args.radius > 0.0 && std::isfinite(args.radius)))
+    throw InputError("--radius: expected a positive distance, got " + std::to_string(args.radius),
+                     ErrorKind::invalid_option);
   if (!args.around.empty()) options.close_up = CloseUp{parse_point(args.around), args.radius_given ? args.radius : 0.0};
-  if (options.close_up && args.radius_given) validate_render_options(options);
   const TriMesh mesh = read_mesh(args.mesh);
-  if (options.close_up && !args.radius_given) {
-    // A tenth of the mesh's diagonal, by default.
-    Vec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const Tri& t : mesh.triangles)
-      for (int32_t v : t) {
-        lo = glm::min(lo, mesh.positions[v]);
-        hi = glm::max(hi, mesh.positions[v]);
-      }
-    if (!mesh.triangles.empty()) options.close_up->radius = 0.1 * glm::length(hi - lo);
-  }
   if (options.close_up) {
     // Checked here to name the file; the close-up's own elements are picked again when drawn.
     try {
       close_up_elements(mesh, *options.close_up);
     } catch (const InputError&) {
       char radius[32];
-      std::snprintf(radius, sizeof radius, "%g", options.close_up->radius);
+      std::snprintf(radius, sizeof radius, "%g", close_up_radius(mesh, *options.close_up));
       throw InputError(args.mesh + ": no element within " + radius + " of --around " + args.around,
                        ErrorKind::invalid_mesh);
     }

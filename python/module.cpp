@@ -584,7 +584,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       "render",
       [](const Array3d& vertices, const Array3i& faces, std::optional<py::array_t<int32_t>> element,
          const std::string& path, int width, int height, const std::string& mode, std::optional<Colors> colors,
-         const std::string& view, const std::string& up) {
+         const std::string& view, const std::string& up, std::optional<std::vector<double>> around, double radius) {
         TriMesh mesh = mesh_from(vertices, faces, "render");
         if (element) mesh.elements.assign(element->data(), element->data() + element->size());
         set_colors(mesh, colors, "render");
@@ -594,12 +594,16 @@ PYBIND11_MODULE(_meshquilt, m) {
         options.mode = parse_render_mode(mode);
         options.view = parse_view(view);
         options.up = parse_up_axis(up);
+        if (around) {
+          if (around->size() != 3) throw InputError("{around}: expected a point (x, y, z)", ErrorKind::invalid_option);
+          options.close_up = CloseUp{Vec3((*around)[0], (*around)[1], (*around)[2]), radius};
+        }
         py::gil_scoped_release release;
         write_file_atomic(path, encode_png(render_mesh(mesh, options)));
       },
       py::arg("vertices"), py::arg("faces"), py::arg("element") = py::none(), py::arg("path"),
       py::arg("width") = 1024, py::arg("height") = 768, py::arg("mode") = "shaded", py::arg("colors") = py::none(),
-      py::arg("view") = "oblique", py::arg("up") = "z");
+      py::arg("view") = "oblique", py::arg("up") = "z", py::arg("around") = py::none(), py::arg("radius") = 0.0);
 
   m.def(
       "edit",

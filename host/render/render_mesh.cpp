@@ -98,7 +98,7 @@ void validate_render_options(const RenderOptions& options) {
                      ErrorKind::invalid_option);
   if (options.up < 0 || options.up > 2)
     throw InputError("{up}: expected x, y or z", ErrorKind::invalid_option);
-  if (options.close_up && !(options.close_up->radius > 0.0 && std::isfinite(options.close_up->radius)))
+  if (options.close_up && !(options.close_up->radius >= 0.0 && std::isfinite(options.close_up->radius)))
     throw InputError("{radius}: expected a positive distance, got " + std::to_string(options.close_up->radius),
                      ErrorKind::invalid_option);
   if (!(options.margin >= 0.0 && options.margin <= 0.45))
@@ -161,10 +161,18 @@ RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options) {
   return render_framed(mesh, options, frame_box(lo, hi, options.view, options.width, options.height, options.margin));
 }
 
+double close_up_radius(const TriMesh& mesh, const CloseUp& close_up) {
+  if (close_up.radius > 0.0) return close_up.radius;
+  Vec3 lo, hi;
+  bounding_box(mesh, &lo, &hi);
+  return mesh.triangles.empty() ? 0.0 : 0.1 * glm::length(hi - lo);
+}
+
 TriMesh close_up_elements(const TriMesh& mesh, const CloseUp& close_up) {
   const std::vector<int32_t> ids = face_element_ids(mesh);
   std::unordered_set<int32_t> near;
-  const double r2 = close_up.radius * close_up.radius;
+  const double radius = close_up_radius(mesh, close_up);
+  const double r2 = radius * radius;
   for (size_t f = 0; f < mesh.num_faces(); ++f)
     for (int32_t v : mesh.triangles[f]) {
       const Vec3 d = mesh.positions[v] - close_up.point;
@@ -179,7 +187,7 @@ TriMesh close_up_elements(const TriMesh& mesh, const CloseUp& close_up) {
       result.elements.push_back(ids[f]);
     }
   if (result.triangles.empty())
-    throw InputError("render: no element comes within " + std::to_string(close_up.radius) + " of the close-up point");
+    throw InputError("render: no element comes within " + std::to_string(radius) + " of the close-up point");
   return result;
 }
 

@@ -26,7 +26,7 @@ inline constexpr int kMaxImageSide = 8192;
 //! `point` to the centre of the whole mesh's bounding box (from outside a convex base).
 struct CloseUp {
   Vec3 point{0.0};
-  double radius = 0.0;
+  double radius = 0.0;  //!< 0: a tenth of the mesh's bounding box diagonal
 };
 
 struct RenderOptions {
@@ -56,7 +56,7 @@ int parse_up_axis(const std::string& text);
 
 //! \throw InputError(invalid_option) naming `--size WxH` when a side is outside
 //!        1..kMaxImageSide, or naming the option when samples is outside 1..4 or margin outside
-//!        [0, 0.45], or naming --radius when a close-up's radius is not positive and finite.
+//!        [0, 0.45], or naming --radius when a close-up's radius is negative or not finite.
 void validate_render_options(const RenderOptions& options);
 
 //! Renders `mesh` framed by its bounding box (frame_box) in options.width x options.height
@@ -71,7 +71,10 @@ void validate_render_options(const RenderOptions& options);
 //!        validate_render_options, or for RenderMode::colors on a mesh without vertex colours; DeviceError/SolverError from Embree.
 RgbImage render_mesh(const TriMesh& mesh, const RenderOptions& options = {});
 
-//! The faces of the elements (face_element_ids) with a vertex within close_up.radius of
+//! close_up.radius, or a tenth of the mesh's bounding box diagonal where that is 0.
+double close_up_radius(const TriMesh& mesh, const CloseUp& close_up);
+
+//! The faces of the elements (face_element_ids) with a vertex within close_up_radius of
 //! close_up.point, each keeping its element id. \throw InputError(invalid_mesh) when there are none.
 TriMesh close_up_elements(const TriMesh& mesh, const CloseUp& close_up);
 

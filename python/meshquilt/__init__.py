@@ -262,14 +262,18 @@ def inspect(mesh: MeshLike) -> Dict[str, Any]:
 
 
 def render(mesh: MeshLike, path: str, width: int = 1024, height: int = 768, mode: str = "shaded",
-           view: str = "oblique", up: str = "z") -> None:
+           view: str = "oblique", up: str = "z", around: Optional[Sequence[float]] = None,
+           radius: float = 0.0) -> None:
     """Writes a PNG preview as `meshquilt render` does: mode "shaded", "elements" or "colors" (the
     mesh's per-vertex `colors`, as paint returns them), view "oblique", "top", "front" or "side",
-    `up` the mesh's axis shown upward ("y" for y-up scans)."""
+    `up` the mesh's axis shown upward ("y" for y-up scans). With `around` (x, y, z), a close-up of
+    the elements within `radius` of that point (0: a tenth of the mesh's diagonal), as
+    `render --around --radius` draws it."""
     vertices, faces = _arrays(mesh, "render")
     element = getattr(mesh, "element", None)
     _meshquilt.render(vertices, faces, None if element is None else np.ascontiguousarray(element, np.int32), path,
-                      width, height, mode, _colors(mesh), view, up)
+                      width, height, mode, _colors(mesh), view, up,
+                      None if around is None else [float(v) for v in around], float(radius))
 
 
 def edit(mesh: Mesh, *, remove_elements: Sequence[int] = (), remove_sources: Sequence[int] = (),

@@ -233,6 +233,28 @@ def test_painted_colours_are_written_read_back_and_rendered_as_the_command_line_
             meshquilt.render(painted, os.path.join(folder, "x.png"), up="w")
 
 
+def test_a_close_up_equals_the_command_lines():
+    # Two tetrahedra far apart: a close-up of one draws it alone, byte for byte as the CLI does.
+    tetra = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float)
+    faces = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]], np.int32)
+    mesh = meshquilt.Mesh(vertices=np.vstack([tetra, tetra + [5, 0, 0]]), faces=np.vstack([faces, faces + 4]))
+    with tempfile.TemporaryDirectory() as folder:
+        ply = os.path.join(folder, "two.ply")
+        meshquilt.write(mesh, ply)
+        mine, theirs, whole = (os.path.join(folder, n) for n in ("mine.png", "theirs.png", "whole.png"))
+        meshquilt.render(mesh, mine, width=120, height=90, around=(5.2, 0.2, 0.2), radius=1.5)
+        done = subprocess.run([CLI, "render", ply, "--around", "5.2,0.2,0.2", "--radius", "1.5", "--size", "120x90",
+                               "-o", theirs], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        assert open(mine, "rb").read() == open(theirs, "rb").read()
+        meshquilt.render(mesh, whole, width=120, height=90)
+        assert open(mine, "rb").read() != open(whole, "rb").read()
+        with pytest.raises(meshquilt.Error, match="no element"):
+            meshquilt.render(mesh, os.path.join(folder, "x.png"), around=(20, 20, 20), radius=1.0)
+        with pytest.raises(meshquilt.Error, match="around"):
+            meshquilt.render(mesh, os.path.join(folder, "x.png"), around=(1, 2))
+
+
 def cli_relief(*args, stats=None):
     with tempfile.TemporaryDirectory() as folder:
         out_path, stats_path = os.path.join(folder, "out.ply"), os.path.join(folder, "stats.json")
