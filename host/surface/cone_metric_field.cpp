@@ -7,12 +7,10 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
-#include "core/error.h"
-
 #include "core/constants.h"
+#include "core/error.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
-#include "numerics/sparse_solve.h"
 
 namespace meshquilt {
 namespace {
@@ -21,7 +19,6 @@ namespace {
 // is kept where it narrows the scale's spread by this factor.
 constexpr int kSettleRounds = 8;
 constexpr double kRelocationGain = 0.995;
-
 
 double corner_angle(const TriMesh& mesh, const Tri& t, int k) {
   const Vec3 a = mesh.positions[t[(k + 1) % 3]] - mesh.positions[t[k]];
@@ -43,10 +40,6 @@ bool closed_sphere(const BaseSurface& base) {
   const SurfaceReport report = inspect_surface(base.mesh);
   return report.closed_manifold() && report.components == 1 && report.euler == 2;
 }
-
-}  // namespace
-
-namespace {
 
 // The cotan Laplacian of a closed base, factored once for every curvature asked of it.
 class ConeMetric {
