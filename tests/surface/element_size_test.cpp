@@ -19,26 +19,40 @@
 namespace meshquilt {
 namespace {
 
+// #65's job with a swatch (`swatch SWATCH_ARGS`) over a base at scale 0.08, inspected with
+// INSPECT_ARGS: inspect's JSON report and synth's stats.
+struct Job {
+  nlohmann::json report, stats;
+};
+
+void run_job(const std::filesystem::path& dir, const std::string& swatch_args, const std::filesystem::path& base,
+             const std::string& inspect_args, Job* job) {
+  const auto swatch = dir / "swatch.ply", out = dir / "out.ply", stats = dir / "stats.json";
+  const auto made = test::run_cli("swatch " + swatch_args + " -o '" + swatch.string() + "'");
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  const auto run = test::run_cli("synth --swatch '" + swatch.string() + "' --base '" + base.string() +
+                                 "' --scale 0.08 --backend cpu --progress none --stats '" + stats.string() + "' -o '" +
+                                 out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto inspect = test::run_cli("inspect '" + out.string() + "' " + inspect_args + " --swatch '" +
+                                     swatch.string() + "' --base '" + base.string() + "' --json 2>/dev/null");
+  ASSERT_EQ(inspect.exit_code, 0) << inspect.output;
+  job->report = nlohmann::json::parse(inspect.output);
+  job->stats = nlohmann::json::parse(test::read_file(stats));
+}
+
 class ElementSize : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ElementSize, TheMedianRingIsTheSizeAsked) {
   const auto base = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes" / GetParam();
   if (!std::filesystem::exists(base)) GTEST_SKIP() << base << " not found";
   const auto dir = test::scratch_dir(std::string("element_size_") + GetParam());
-  const auto swatch = dir / "mail.ply", out = dir / "out.ply", stats = dir / "stats.json";
-  const auto made = test::run_cli("swatch chainmail --rows 6 --columns 5 --ring-segments 16 --wire-segments 6 -o '" +
-                                  swatch.string() + "'");
-  ASSERT_EQ(made.exit_code, 0) << made.output;
-  const auto run = test::run_cli("synth --swatch '" + swatch.string() + "' --base '" + base.string() +
-                                 "' --scale 0.08 --backend cpu --progress none --stats '" + stats.string() + "' -o '" +
-                                 out.string() + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  const auto inspect = test::run_cli("inspect '" + out.string() + "' --rings --swatch '" + swatch.string() +
-                                     "' --base '" + base.string() + "' --scale 0.08 --json 2>/dev/null");
-  ASSERT_EQ(inspect.exit_code, 0) << inspect.output;
-  const nlohmann::json rings = nlohmann::json::parse(inspect.output).at("rings");
+  Job job;
+  ASSERT_NO_FATAL_FAILURE(
+      run_job(dir, "chainmail --rows 6 --columns 5 --ring-segments 16 --wire-segments 6", base, "--rings --scale 0.08", &job));
+  const nlohmann::json& rings = job.report.at("rings");
   const nlohmann::json over = rings.at("radius_over_asked");
-  const nlohmann::json size = nlohmann::json::parse(test::read_file(stats)).at("element_size");
+  const nlohmann::json& size = job.stats.at("element_size");
   std::printf("%s: radius over asked %.3f / %.3f / %.3f, stats %.3f / %.3f / %.3f, linked to >= 3 %.3f, piece %.3f\n",
               GetParam(), over.at("p10").get<double>(), over.at("median").get<double>(), over.at("p90").get<double>(),
               size.at("p10").get<double>(), size.at("median").get<double>(), size.at("p90").get<double>(),
@@ -49,7 +63,7 @@ TEST_P(ElementSize, TheMedianRingIsTheSizeAsked) {
   EXPECT_GE(rings.at("largest_piece_share").get<double>(), 0.95);
 
   // Each cone the stats name lies on one of the base's faces, in the base's units.
-  const nlohmann::json report = nlohmann::json::parse(test::read_file(stats));
+  const nlohmann::json& report = job.stats;
   const nlohmann::json& cones = report.at("cone_points");
   EXPECT_EQ(cones.size(), report.at("cones").get<size_t>());
   // Poincare-Hopf over these closed genus-0 bases: the indices sum to 2 in whole turns.
@@ -86,18 +100,10 @@ TEST(WeaveOverABase, YarnsContinueAndStayInTheShell) {
   const auto base = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/bunny.off";
   if (!std::filesystem::exists(base)) GTEST_SKIP() << base << " not found";
   const auto dir = test::scratch_dir("element_size_weave");
-  const auto swatch = dir / "weave.ply", out = dir / "out.ply", stats = dir / "stats.json";
-  const auto made = test::run_cli("swatch weave -o '" + swatch.string() + "'");
-  ASSERT_EQ(made.exit_code, 0) << made.output;
-  const auto run = test::run_cli("synth --swatch '" + swatch.string() + "' --base '" + base.string() +
-                                 "' --scale 0.08 --backend cpu --progress none --stats '" + stats.string() + "' -o '" +
-                                 out.string() + "'");
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  const auto inspect = test::run_cli("inspect '" + out.string() + "' --yarns --swatch '" + swatch.string() +
-                                     "' --base '" + base.string() + "' --json 2>/dev/null");
-  ASSERT_EQ(inspect.exit_code, 0) << inspect.output;
-  const nlohmann::json report = nlohmann::json::parse(inspect.output);
-  const nlohmann::json synth = nlohmann::json::parse(test::read_file(stats));
+  Job job;
+  ASSERT_NO_FATAL_FAILURE(run_job(dir, "weave", base, "--yarns", &job));
+  const nlohmann::json& report = job.report;
+  const nlohmann::json& synth = job.stats;
   const double shell = synth.at("shell_height").get<double>();
   const double diagonal = shell / synth.at("shell_height_share").get<double>();
   const double radius = report.at("yarns").at("median_radius").get<double>();
