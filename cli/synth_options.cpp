@@ -27,6 +27,11 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
   cmd->add_option("--symmetry", args.symmetry,
                   "with --base: n of the layout's direction field, 1, 2 or 4 (0: the swatch's rotational symmetry)")
       ->capture_default_str();
+  cmd->add_option("--size-hold", args.size_hold,
+                  "with --base: how strongly the layout holds elements to one size against keeping their shape "
+                  "(0.1: conformal, round rings whose size follows the base's curvature; 3-10: even sizes, "
+                  "stretched rings)")
+      ->capture_default_str();
   cmd->add_option("--shell-height", args.shell_height,
                   "with --base: layer height in base units (default: the swatch's thickness at --scale)");
   cmd->add_option("--write-field", args.write_field, "with --base: write the field used as OBJ line segments");

@@ -111,6 +111,8 @@ void check_synth_request(const SynthRequest& r) {
   if (!curved && !r.field.empty()) fail("{field} needs {base}");
   if (r.embed != "shell" && r.embed != "normal") fail("{embed}: expected shell or normal, got '" + r.embed + "'");
   if (r.cells < 4 || r.cells > 256) fail("{cells}: expected 4..256, got " + std::to_string(r.cells));
+  if (!(r.size_hold > 0.0 && r.size_hold <= 1000.0))
+    fail("{size_hold}: expected a number in (0, 1000], got " + std::to_string(r.size_hold));
   if (!(r.fill_margin >= 0.0) || !std::isfinite(r.fill_margin))
     fail("{fill_margin}: expected a number >= 0, got " + std::to_string(r.fill_margin));
 }
@@ -157,6 +159,7 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
     options.shell_height = request.shell_height;
     options.shared_layout = request.shared_layout;
     options.symmetry = request.symmetry;
+    options.size_hold = request.size_hold;
     const BaseSurface surface(inputs.base);
     const GuidanceField field = interpolate_field(surface, request.field);
     if (hooks.field_ready) hooks.field_ready(surface, field);

@@ -39,7 +39,7 @@ TriMesh split_faces(const TriMesh& mesh, int levels) {
 
 BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target,
                        const std::vector<double>& weight, bool drawn,
-                       const std::optional<std::array<glm::dvec2, 2>>& lattice)
+                       const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold)
     : base_(base) {
   size_t faces = base.mesh.num_faces();
   while (faces > 0 && faces < kLayoutFaces && levels_ < 3) {
@@ -61,7 +61,7 @@ BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<
     const std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0]);
     if (placed && *field_scale_spread(*fine_, *placed) < *field_scale_spread(*fine_, field)) field = *placed;
   }
-  layout_ = seamless_layout(*fine_, field, lattice);
+  layout_ = seamless_layout(*fine_, field, lattice, size_hold);
 }
 
 LayoutWindow BaseLayout::unfold(const std::vector<int32_t>& faces, int32_t start, const std::vector<int32_t>& corner_vertex,

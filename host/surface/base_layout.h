@@ -18,11 +18,12 @@ namespace meshquilt {
 class BaseLayout {
  public:
   //! target, weight: per base face, as smoothest_direction_field takes them; drawn: the user
-  //! gave directions, which the field must follow; lattice: the texture's periods, as
-  //! seamless_layout takes them.
+  //! gave directions, which the field must follow; lattice, size_hold: as seamless_layout
+  //! takes them.
   //! \throw SolverError when a solve fails.
   BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight,
-             bool drawn = false, const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt);
+             bool drawn = false, const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt,
+             double size_hold = kDefaultSizeHold);
   BaseLayout(const BaseLayout&) = delete;
   BaseLayout& operator=(const BaseLayout&) = delete;
 

@@ -19,9 +19,6 @@
 namespace meshquilt {
 namespace {
 
-// How strongly the layout's scale is held at 1 against being even and aligned.
-constexpr double kUnitWeight = 0.1;
-
 int corner_of(const Tri& t, int32_t v) { return t[0] == v ? 0 : t[1] == v ? 1 : 2; }
 
 // The rotation index of a turn by `angle` against the field's period, in [0, n).
@@ -189,7 +186,8 @@ struct SeamHold {
 };
 
 // unit: the length grad u and grad v are weakly held at.
-void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges, double unit, const SeamHold* hold) {
+void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges, double unit, double size_hold,
+                  const SeamHold* hold) {
   const TriMesh& mesh = base.mesh;
   const int quarter = 4 / layout.symmetry;  // quarter turns per unit of turn
   std::vector<Eigen::Triplet<double>> triplets;
@@ -223,8 +221,8 @@ void solve_layout(const BaseSurface& base, SeamlessLayout& layout, int32_t wedge
     add_row(uy, 0.0, area);
     add_row(vx, 0.0, area);
     add_row(conformal, 0.0, area);
-    add_row(ux, unit, kUnitWeight * area);
-    add_row(vy, unit, kUnitWeight * area);
+    add_row(ux, unit, size_hold * area);
+    add_row(vy, unit, size_hold * area);
   }
   // Seams: (U_g(a) - U_g(b)) - R(-turn) (U_f(a) - U_f(b)) = 0, both coordinates.
   const double stiff = 1e10 * std::max(diagonal, 1e-300);
@@ -341,7 +339,7 @@ std::vector<Seam> join_seams(const BaseSurface& base, const SeamlessLayout& layo
 // seams nearest a period first, a third of those left at a time, the layout solved again with
 // them held, so that the rest adapt before they are rounded in turn.
 void round_to_lattice(const BaseSurface& base, SeamlessLayout& layout, int32_t wedges, double unit,
-                      const std::array<glm::dvec2, 2>& lattice) {
+                      double size_hold, const std::array<glm::dvec2, 2>& lattice) {
   const int quarter = 4 / layout.symmetry;
   const std::vector<SeamEdge> edges = seam_edges(base, layout);
   const std::vector<Seam> seams = join_seams(base, layout, edges);
@@ -389,7 +387,7 @@ void round_to_lattice(const BaseSurface& base, SeamlessLayout& layout, int32_t w
         hold.held[e.f][e.k] = 1;
       }
     }
-    solve_layout(base, layout, wedges, unit, &hold);
+    solve_layout(base, layout, wedges, unit, size_hold, &hold);
   }
 }
 
@@ -405,7 +403,7 @@ glm::dvec2 quarter_turned(const glm::dvec2& p, int quarter_turns) {
 }
 
 SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
-                               const std::optional<std::array<glm::dvec2, 2>>& lattice) {
+                               const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold) {
   const TriMesh& mesh = base.mesh;
   SeamlessLayout layout;
   layout.symmetry = field.symmetry;
@@ -431,10 +429,10 @@ SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& fi
     }
   cut_open(base, tree, layout);
   const int32_t wedges = make_wedges(base, layout);
-  solve_layout(base, layout, wedges, 1.0, nullptr);
+  solve_layout(base, layout, wedges, 1.0, size_hold, nullptr);
   const double scale = normalize_scale(base, layout, lattice.has_value());
   if (lattice) {
-    round_to_lattice(base, layout, wedges, 1.0 / scale, *lattice);
+    round_to_lattice(base, layout, wedges, 1.0 / scale, size_hold, *lattice);
     layout.on_lattice = true;
   }
   for (size_t f = 0; f < mesh.num_faces(); ++f) {

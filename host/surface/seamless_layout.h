@@ -34,6 +34,9 @@ struct SeamlessLayout {
   bool on_lattice = false;                   //!< seams continue by periods of a lattice
 };
 
+//! The default size hold: the layout conformal but for a faint pull that fixes its scale.
+inline constexpr double kDefaultSizeHold = 0.1;
+
 //! Combs the field over a spanning tree of faces, cuts the base along the edges off that tree
 //! that do not end in a dangling branch (which keeps the cones and the handles cut), and solves
 //! min sum_f a_f (|grad u - axis_f|^2 + |grad v - normal_f x axis_f|^2) over the cut-open base with
@@ -43,9 +46,14 @@ struct SeamlessLayout {
 //! rounded to its periods and the layout solved again with them held; its median scale is then
 //! taken over faces weighted by the geometric mean of base and layout area (else by base area),
 //! so that the median element, not the median face, has the asked size.
+//! size_hold: the weight, per unit of face area, holding the layout's scale to its unit in the
+//! field's frame, against the conformal terms' 1: small keeps the layout conformal (round
+//! elements whose size follows the base's curvature), large evens the size and lets elements
+//! stretch (kDefaultSizeHold: conformal).
 //! \throw SolverError when the solve fails.
 SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
-                               const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt);
+                               const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt,
+                               double size_hold = kDefaultSizeHold);
 
 //! A set of base faces laid out from the layout, unfolded from `start` across cuts.
 struct LayoutWindow {

@@ -134,7 +134,8 @@ class SurfaceDriver {
       contacts_ = std::make_unique<LatticeContacts>(swatch_, lattice_->basis, setup_.step.partner_distance * swatch_.mean_edge);
     std::optional<std::array<glm::dvec2, 2>> periods;
     if (lattice_) periods = std::array<glm::dvec2, 2>{unit_ * lattice_->basis[0], unit_ * lattice_->basis[1]};
-    auto layout = std::make_unique<BaseLayout>(base_, n, targets.target, targets.weight, !field_.held_vertices.empty(), periods);
+    auto layout = std::make_unique<BaseLayout>(base_, n, targets.target, targets.weight, !field_.held_vertices.empty(),
+                                               periods, options_.size_hold);
     stats_.on_lattice = layout->layout().on_lattice;
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();

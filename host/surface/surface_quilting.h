@@ -12,6 +12,7 @@
 #include "inspect/copy_sizes.h"
 #include "mesh/tri_mesh.h"
 #include "surface/guidance_field.h"
+#include "surface/seamless_layout.h"
 #include "surface/surface_embedding.h"
 #include "quilt/quilt_options.h"
 
@@ -37,6 +38,9 @@ struct SurfaceQuiltOptions : QuiltOptions {
   bool shared_layout = true;
   //! n of that field: 1, 2 or 4; 0 takes the swatch's rotational symmetry (quilt/swatch_symmetry.h).
   int symmetry = 0;
+  //! How strongly that layout holds elements to one size against keeping them their shape
+  //! (seamless_layout.h): 0.1 conformal, 3-10 even sizes with stretched elements.
+  double size_hold = kDefaultSizeHold;
   //! Places local coordinates in space; empty: displacement along vertex normals.
   EmbeddingFactory embedding;
 };

@@ -108,6 +108,12 @@ TEST_F(SynthBadInput, BadScale) {
   expect_failure("--base " + swatch("tet.off", kBaseTetrahedron).string() + " --scale 0", 6, "--scale");
 }
 
+TEST_F(SynthBadInput, BadSizeHold) {
+  expect_failure("--plane 2x2 --size-hold 0", 6, "--size-hold");
+  expect_failure("--plane 2x2 --size-hold -1", 6, "--size-hold");
+  expect_failure("--plane 2x2 --size-hold 2000", 6, "--size-hold");
+}
+
 TEST(SynthBadOutput, UnknownOutputFormat) {
   const auto dir = scratch_dir("unknown_output");
   const CliResult r = run_cli("synth --progress none -o '" + (dir / "out.xyz").string() + "'");

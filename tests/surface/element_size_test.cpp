@@ -19,20 +19,20 @@
 namespace meshquilt {
 namespace {
 
-// #65's job with a swatch (`swatch SWATCH_ARGS`) over a base at scale 0.08, inspected with
-// INSPECT_ARGS: inspect's JSON report and synth's stats.
+// #65's job with a swatch (`swatch SWATCH_ARGS`) over a base at scale 0.08 (and SYNTH_ARGS),
+// inspected with INSPECT_ARGS: inspect's JSON report and synth's stats.
 struct Job {
   nlohmann::json report, stats;
 };
 
 void run_job(const std::filesystem::path& dir, const std::string& swatch_args, const std::filesystem::path& base,
-             const std::string& inspect_args, Job* job) {
+             const std::string& inspect_args, Job* job, const std::string& synth_args = "") {
   const auto swatch = dir / "swatch.ply", out = dir / "out.ply", stats = dir / "stats.json";
   const auto made = test::run_cli("swatch " + swatch_args + " -o '" + swatch.string() + "'");
   ASSERT_EQ(made.exit_code, 0) << made.output;
   const auto run = test::run_cli("synth --swatch '" + swatch.string() + "' --base '" + base.string() +
-                                 "' --scale 0.08 --backend cpu --progress none --stats '" + stats.string() + "' -o '" +
-                                 out.string() + "'");
+                                 "' --scale 0.08 --backend cpu --progress none " + synth_args + " --stats '" +
+                                 stats.string() + "' -o '" + out.string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto inspect = test::run_cli("inspect '" + out.string() + "' " + inspect_args + " --swatch '" +
                                      swatch.string() + "' --base '" + base.string() + "' --json 2>/dev/null");
@@ -90,6 +90,29 @@ TEST_P(ElementSize, TheMedianRingIsTheSizeAsked) {
     EXPECT_LT(nearest, 1e-6 * report.at("shell_height").get<double>() / report.at("shell_height_share").get<double>())
         << c.dump();
   }
+  std::filesystem::remove_all(dir);
+}
+
+// --size-hold trades shape for size: held at 10, the bunny's rings meet #65's size bars (the
+// price, oval rings, is printed: decision 0056).
+TEST(SizeHold, EvensTheRingsOverTheBunny) {
+  const auto base = std::filesystem::path(MESHQUILT_SHARED_DIR) / "data/meshes/bunny.off";
+  if (!std::filesystem::exists(base)) GTEST_SKIP() << base << " not found";
+  const auto dir = test::scratch_dir("element_size_hold");
+  Job job;
+  ASSERT_NO_FATAL_FAILURE(run_job(dir, "chainmail --rows 6 --columns 5 --ring-segments 16 --wire-segments 6", base,
+                                  "--rings --scale 0.08", &job, "--size-hold 10"));
+  const nlohmann::json& rings = job.report.at("rings");
+  const nlohmann::json& over = rings.at("radius_over_asked");
+  std::printf("bunny held at 10: radius over asked %.3f / %.3f / %.3f, aspect %.2f, linked to >= 3 %.3f, piece %.3f\n",
+              over.at("p10").get<double>(), over.at("median").get<double>(), over.at("p90").get<double>(),
+              rings.at("median_aspect").get<double>(), rings.at("linked_to_3_share").get<double>(),
+              rings.at("largest_piece_share").get<double>());
+  EXPECT_GE(over.at("p10").get<double>(), 0.80);
+  EXPECT_LE(over.at("p90").get<double>(), 1.25);
+  EXPECT_NEAR(over.at("median").get<double>(), 1.0, 0.05);
+  EXPECT_GE(rings.at("linked_to_3_share").get<double>(), 0.93);
+  EXPECT_GE(rings.at("largest_piece_share").get<double>(), 0.95);
   std::filesystem::remove_all(dir);
 }
 
