@@ -72,6 +72,9 @@ if [ -f "$bunny" ]; then
   "$meshquilt" synth --swatch "$work/mail65.ply" --base "$bunny" --scale 0.08 --seed 1 --backend cpu --progress none \
     --stats "$work/mail65.json" -o "$work/bunny_mail65.ply" >/dev/null
   "$meshquilt" render "$work/bunny_mail65.ply" --up y --view front --size 800x640 -o docs/images/bunny_ring_size.png
+  "$meshquilt" synth --swatch "$work/mail65.ply" --base "$bunny" --scale 0.08 --seed 1 --size-hold 10 --backend cpu \
+    --progress none -o "$work/bunny_mail65_held.ply" >/dev/null
+  "$meshquilt" render "$work/bunny_mail65_held.ply" --up y --view front --size 800x640 -o docs/images/bunny_ring_size_held.png
   read -r plus minus < <(python3 - "$work/mail65.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
