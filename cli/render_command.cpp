@@ -74,18 +74,16 @@ void run_render(const RenderArgs& args) {
                      ErrorKind::invalid_option);
   if (!args.around.empty()) options.close_up = CloseUp{parse_point(args.around), args.radius_given ? args.radius : 0.0};
   const TriMesh mesh = read_mesh(args.mesh);
-  if (options.close_up) {
-    // Checked here to name the file; the close-up's own elements are picked again when drawn.
-    try {
-      close_up_elements(mesh, *options.close_up);
-    } catch (const InputError&) {
-      char radius[32];
-      std::snprintf(radius, sizeof radius, "%g", close_up_radius(mesh, *options.close_up));
-      throw InputError(args.mesh + ": no element within " + radius + " of --around " + args.around,
-                       ErrorKind::invalid_mesh);
-    }
+  try {
+    write_preview(mesh, output, options);
+  } catch (const InputError& e) {
+    if (!options.close_up || e.kind() != ErrorKind::invalid_mesh) throw;
+    // Nothing near the point: name the file and the point as given.
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%g", close_up_radius(mesh, *options.close_up));
+    throw InputError(args.mesh + ": no element within " + radius + " of --around " + args.around,
+                     ErrorKind::invalid_mesh);
   }
-  write_preview(mesh, output, options);
   std::printf("wrote %s: %dx%d, %zu faces, %s view, %s\n", output.string().c_str(), options.width,
               options.height, mesh.num_faces(), args.view.c_str(), args.mode.c_str());
 }

@@ -1,6 +1,7 @@
 #include "numerics/sparse_solve.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -66,6 +67,18 @@ Eigen::MatrixXd solve_with(const Eigen::SparseMatrix<double>& A, const Eigen::Ma
 }
 
 }  // namespace
+
+PositiveDefiniteFactor::PositiveDefiniteFactor(const Eigen::SparseMatrix<double>& A, std::string what)
+    : what_(std::move(what)) {
+  factor_.compute(A);
+  if (factor_.info() != Eigen::Success) throw SolverError(what_ + ": factorization failed");
+}
+
+Eigen::MatrixXd PositiveDefiniteFactor::solve(const Eigen::MatrixXd& B) const {
+  Eigen::MatrixXd X = factor_.solve(B);
+  if (factor_.info() != Eigen::Success || !X.allFinite()) throw SolverError(what_ + ": solve failed");
+  return X;
+}
 
 Eigen::MatrixXd solve_positive_definite(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
                                         const std::string& what, const SolveOptions& options) {

@@ -23,6 +23,20 @@ struct SolveOptions {
   bool refuse_singular = false;
 };
 
+//! One factorization of A for many right-hand sides, in turn (as a greedy search asks them):
+//! made and checked as solve_positive_definite makes and checks it with the default options.
+class PositiveDefiniteFactor {
+ public:
+  //! \throw SolverError "WHAT: factorization failed".
+  PositiveDefiniteFactor(const Eigen::SparseMatrix<double>& A, std::string what);
+  //! A^-1 B. \throw SolverError "WHAT: solve failed" (a failed or non-finite solve).
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+
+ private:
+  std::string what_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+};
+
 //! X = A^-1 B, where A (n x n, lower triangle read) is symmetric positive (semi-)definite and B
 //! is n x k. `what` names the system in errors ("element deformation: the 120-vertex system").
 //! \throw SolverError "WHAT: factorization failed", "WHAT is singular" (with refuse_singular) or

@@ -8,9 +8,9 @@
 #include <limits>
 
 #include "core/constants.h"
-#include "core/error.h"
 #include "mesh/measures.h"
 #include "mesh/topology.h"
+#include "numerics/sparse_solve.h"
 
 namespace meshquilt {
 namespace {
@@ -44,8 +44,24 @@ bool closed_sphere(const BaseSurface& base) {
 // The cotan Laplacian of a closed base, factored once for every curvature asked of it.
 class ConeMetric {
  public:
-  explicit ConeMetric(const BaseSurface& base) : defect_(angle_defects(base.mesh)) {
-    const TriMesh& mesh = base.mesh;
+  explicit ConeMetric(const BaseSurface& base)
+      : defect_(angle_defects(base.mesh)), factor_(laplacian(base.mesh), "cone metric") {}
+
+  //! phi solving L phi = K_hat - K, mean 0.
+  std::vector<double> scale(const std::vector<double>& target_curvature) const {
+    const auto n = static_cast<Eigen::Index>(defect_.size());
+    Eigen::MatrixXd rhs(n, 1);
+    for (Eigen::Index v = 0; v < n; ++v) rhs(v, 0) = target_curvature[v] - defect_[v];
+    const Eigen::MatrixXd phi = factor_.solve(rhs);
+    std::vector<double> result(static_cast<size_t>(n));
+    double mean = 0.0;
+    for (Eigen::Index v = 0; v < n; ++v) mean += (result[v] = phi(v, 0)) / static_cast<double>(n);
+    for (double& x : result) x -= mean;
+    return result;
+  }
+
+ private:
+  static Eigen::SparseMatrix<double> laplacian(const TriMesh& mesh) {
     const auto n = static_cast<Eigen::Index>(mesh.num_vertices());
     std::vector<Eigen::Triplet<double>> triplets;
     double largest = 0.0;
@@ -61,29 +77,13 @@ class ConeMetric {
       }
     // phi is defined up to a constant: a faint pull to 0 picks one, the mean taken out after.
     for (Eigen::Index v = 0; v < n; ++v) triplets.emplace_back(v, v, 1e-9 * std::max(largest, 1e-300));
-    Eigen::SparseMatrix<double> laplacian(n, n);
-    laplacian.setFromTriplets(triplets.begin(), triplets.end());
-    factor_.compute(laplacian);
-    if (factor_.info() != Eigen::Success) throw SolverError("cone metric: factorization failed");
+    Eigen::SparseMatrix<double> L(n, n);
+    L.setFromTriplets(triplets.begin(), triplets.end());
+    return L;
   }
 
-  //! phi solving L phi = K_hat - K, mean 0.
-  std::vector<double> scale(const std::vector<double>& target_curvature) const {
-    const auto n = static_cast<Eigen::Index>(defect_.size());
-    Eigen::VectorXd rhs(n);
-    for (Eigen::Index v = 0; v < n; ++v) rhs(v) = target_curvature[v] - defect_[v];
-    const Eigen::VectorXd phi = factor_.solve(rhs);
-    if (factor_.info() != Eigen::Success || !phi.allFinite()) throw SolverError("cone metric: solve failed");
-    std::vector<double> result(phi.data(), phi.data() + n);
-    double mean = 0.0;
-    for (double x : result) mean += x / static_cast<double>(n);
-    for (double& x : result) x -= mean;
-    return result;
-  }
-
- private:
   std::vector<double> defect_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+  PositiveDefiniteFactor factor_;
 };
 
 }  // namespace

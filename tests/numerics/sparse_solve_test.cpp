@@ -1,4 +1,5 @@
-// solve_positive_definite against dense solves written out here, and its refusals.
+// solve_positive_definite and PositiveDefiniteFactor against dense solves written out here, and
+// the refusals.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -81,6 +82,18 @@ TEST(SparseSolve, RefusesAnIndefiniteSystemWhenAsked) {
   A.coeffRef(0, 0) = -3.0;
   EXPECT_THROW(solve_positive_definite(A, Eigen::MatrixXd::Ones(4, 1), "indefinite", SolveOptions{SolveOrdering::amd, true}),
                SolverError);
+}
+
+TEST(PositiveDefiniteFactor, OneFactorAnswersEachRightHandSideAsTheDenseSolve) {
+  const Eigen::SparseMatrix<double> A = shifted_path_laplacian(40, 0.3);
+  const PositiveDefiniteFactor factor(A, "path");
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 3; ++trial) {
+    Eigen::MatrixXd B(40, 1);
+    for (int i = 0; i < 40; ++i) B(i, 0) = u(rng);
+    EXPECT_LT((factor.solve(B) - thomas(A, B)).cwiseAbs().maxCoeff(), 1e-10);
+  }
 }
 
 }  // namespace
