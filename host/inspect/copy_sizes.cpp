@@ -8,6 +8,14 @@
 namespace meshquilt {
 namespace {
 
+double quantile(std::vector<double>& values, double q) {
+  const size_t k = std::min(values.size() - 1, static_cast<size_t>(q * static_cast<double>(values.size())));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+}  // namespace
+
 double gyration(const std::vector<Vec3>& points) {
   if (points.empty()) return 0.0;
   Vec3 mean(0.0);
@@ -16,14 +24,6 @@ double gyration(const std::vector<Vec3>& points) {
   for (const Vec3& p : points) sum += glm::dot(p - mean, p - mean);
   return std::sqrt(sum / static_cast<double>(points.size()));
 }
-
-double quantile(std::vector<double>& values, double q) {
-  const size_t k = std::min(values.size() - 1, static_cast<size_t>(q * static_cast<double>(values.size())));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
-}
-
-}  // namespace
 
 CopySizes copy_sizes(const TriMesh& output, const std::vector<TriMesh>& swatch_elements, double unit) {
   CopySizes out;

@@ -14,6 +14,9 @@ struct CopySizes {
   double p10 = 0.0, median = 0.0, p90 = 0.0;
 };
 
+//! Root mean square distance of the points from their mean (0 for none).
+double gyration(const std::vector<Vec3>& points);
+
 //! Size is the radius of gyration (root mean square distance of an element's vertices from their
 //! mean). `output` carries per-face elements and sources; `swatch_elements[s]` is source s in
 //! swatch units, `unit` base units per swatch unit. Elements stitched or cut (other vertex counts

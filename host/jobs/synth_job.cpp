@@ -57,6 +57,7 @@ void add_curved_stats(const SynthRequest& request, const SurfaceQuiltStats& stat
   out["synthesis_map_elements"] = stats.synthesis_map_elements;
   const CopySizes& sizes = stats.element_size;
   out["element_size"] = {{"copies", sizes.copies}, {"p10", sizes.p10}, {"median", sizes.median}, {"p90", sizes.p90}};
+  out["size_correction"] = stats.size_correction;
   if (request.embed == "shell") {
     out["stretch_l2_initial"] = shell.stretch_initial;
     out["stretch_l2_final"] = shell.stretch_final;

@@ -40,7 +40,7 @@ TriMesh split_faces(const TriMesh& mesh, int levels) {
 BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target,
                        const std::vector<double>& weight, bool drawn,
                        const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold)
-    : base_(base) {
+    : base_(base), lattice_(lattice), size_hold_(size_hold) {
   size_t faces = base.mesh.num_faces();
   while (faces > 0 && faces < kLayoutFaces && levels_ < 3) {
     faces *= 4;
@@ -55,13 +55,17 @@ BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<
     fine_target[f] = target[f / parts];
     fine_weight[f] = weight[f / parts];
   }
-  DirectionField field = smoothest_direction_field(*fine_, symmetry, fine_target, fine_weight);
+  field_ = smoothest_direction_field(*fine_, symmetry, fine_target, fine_weight);
   // Where no one drew a field, the cones that flatten the base more evenly.
   if (!drawn) {
-    const std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0]);
-    if (placed && *field_scale_spread(*fine_, *placed) < *field_scale_spread(*fine_, field)) field = *placed;
+    std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0]);
+    if (placed && *field_scale_spread(*fine_, *placed) < *field_scale_spread(*fine_, field_)) field_ = std::move(*placed);
   }
-  layout_ = seamless_layout(*fine_, field, lattice, size_hold);
+  layout_ = seamless_layout(*fine_, field_, lattice_, size_hold_);
+}
+
+void BaseLayout::resize(double element_scale) {
+  layout_ = seamless_layout(*fine_, field_, lattice_, size_hold_, element_scale);
 }
 
 LayoutWindow BaseLayout::unfold(const std::vector<int32_t>& faces, int32_t start, const std::vector<int32_t>& corner_vertex,

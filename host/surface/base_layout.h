@@ -24,6 +24,8 @@ class BaseLayout {
   BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight,
              bool drawn = false, const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt,
              double size_hold = kDefaultSizeHold);
+  //! Lays the same field out again with elements element_scale times the size (seamless_layout).
+  void resize(double element_scale);
   BaseLayout(const BaseLayout&) = delete;
   BaseLayout& operator=(const BaseLayout&) = delete;
 
@@ -49,6 +51,9 @@ class BaseLayout {
   int levels_ = 0;
   TriMesh fine_mesh_;
   std::unique_ptr<BaseSurface> fine_;
+  DirectionField field_;
+  std::optional<std::array<glm::dvec2, 2>> lattice_;
+  double size_hold_;
   SeamlessLayout layout_;
 };
 

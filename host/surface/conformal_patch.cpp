@@ -453,12 +453,8 @@ SurfacePatch& centred(SurfacePatch& patch, const SurfacePoint& seed) {
 
 }  // namespace
 
-SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
-                                  const std::vector<Vec3>* face_field, const BaseLayout* layout) {
+std::vector<int32_t> ball_faces(const BaseSurface& base, const SurfacePoint& seed, double radius) {
   const TriMesh& mesh = base.mesh;
-  SurfacePatch patch;
-  patch.radius = radius;
-
   // Dijkstra along edges from the seed face's corners.
   std::unordered_map<int32_t, double> distance;
   using Entry = std::pair<double, int32_t>;
@@ -485,7 +481,6 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
       queue.emplace(dw, w);
     }
   }
-  // Faces of reached vertices (the seed face always).
   std::vector<int32_t> faces{seed.face};
   for (int32_t v : reached)
     for (int32_t f : base.vertex_faces[v]) faces.push_back(f);
@@ -499,65 +494,89 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   // and a conformal map of it folds (36 of 60 full-size balls on genus-4 fertility at
   // `--scale 0.13` were none): it is cut open where its fronts meet.
   if (euler_characteristic(mesh, faces) != 1) faces = disk_within(base, faces, seed.face, distance);
+  return faces;
+}
+
+namespace {
+
+// The window of the shared layout over `faces`, less the faces it folds round a cone and the
+// farther of two it lays over each other (a point over them goes to the nearest face), rather
+// than give up the shared layout for the whole patch; nullopt where it still folds.
+std::optional<SurfacePatch> window_of(const BaseSurface& base, const SurfacePoint& seed, double radius,
+                                      const std::vector<int32_t>& faces, const BaseLayout& layout) {
+  const TriMesh& mesh = base.mesh;
+  const Vec3 origin = base.position(seed);
+  // Where the layout folds the seed's own face, the window starts from the nearest face it
+  // does not: a window needs its start face.
+  SurfacePoint anchor = seed;
+  const auto window_over = [&](const std::vector<int32_t>& window_faces) {
+    SurfacePatch window;
+    window.radius = radius;
+    set_faces(mesh, window, window_faces);
+    const LayoutWindow unfolded = layout.unfold(window_faces, anchor.face, window.local_vertex_of_face_,
+                                                static_cast<int32_t>(window.vertices.size()));
+    slit_open(window, unfolded.corner_uv, 1e-6 * radius);
+    measure_distortion(base, window, 1.0);
+    return window;
+  };
+  SurfacePatch slit = window_over(faces);
+  // Unfolded without the faces left out, a window may reach round the cone the other way.
+  const int most = std::max<int>(1, static_cast<int>(faces.size()) / 50);
+  for (int round = 0; round < 4 && slit.flipped_faces <= most; ++round) {
+    std::vector<uint8_t> left_out(slit.faces.size(), 0);
+    if (slit.flipped_faces > 0) {
+      for (size_t k = 0; k < slit.faces.size(); ++k) {
+        const int32_t* v = &slit.local_vertex_of_face_[3 * k];
+        left_out[k] = cross2(slit.uv[v[1]] - slit.uv[v[0]], slit.uv[v[2]] - slit.uv[v[0]]) <= 0.0;
+      }
+      const size_t at = static_cast<size_t>(slit.face_index(anchor.face));
+      if (left_out[at]) {
+        double nearest = std::numeric_limits<double>::max();
+        for (size_t k = 0; k < slit.faces.size(); ++k) {
+          const double d = glm::distance(origin, base.position({slit.faces[k], glm::dvec2(1.0 / 3.0)}));
+          if (left_out[k] || d >= nearest) continue;
+          nearest = d;
+          anchor = {slit.faces[k], glm::dvec2(1.0 / 3.0)};
+        }
+        if (anchor.face == seed.face) break;
+      }
+    } else {
+      left_out = overlapping_faces(slit, mesh, origin);
+    }
+    std::vector<int32_t> kept_faces;
+    for (size_t k = 0; k < slit.faces.size(); ++k)
+      if (!left_out[k] || slit.faces[k] == anchor.face) kept_faces.push_back(slit.faces[k]);
+    if (kept_faces.size() == slit.faces.size()) break;
+    slit = window_over(connected_within(base, kept_faces, anchor.face));
+  }
+  if (slit.flipped_faces > 0) return std::nullopt;
+  // The layout's scale changes over a window as it does over every window round it: a smaller
+  // window would change nothing.
+  slit.area_distortion = 1.0;
+  slit.chart = PatchChart::layout_window;
+  return std::move(centred(slit, anchor));
+}
+
+}  // namespace
+
+std::optional<SurfacePatch> grow_layout_window(const BaseSurface& base, const SurfacePoint& seed, double radius,
+                                               const BaseLayout& layout) {
+  return window_of(base, seed, radius, ball_faces(base, seed, radius), layout);
+}
+
+SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
+                                  const std::vector<Vec3>* face_field, const BaseLayout* layout) {
+  const TriMesh& mesh = base.mesh;
+  SurfacePatch patch;
+  patch.radius = radius;
+  const std::vector<int32_t> faces = ball_faces(base, seed, radius);
   set_faces(mesh, patch, faces);
 
   // A window of the shared layout where it unfolds without a cone or a fold; a field-aligned
   // chart of the patch alone (the layout's field, combed over the window) where that does not
   // fold; the conformal map, scaled to the patch's area, otherwise and where no layout is given.
   if (layout) {
-    // Where the layout folds the seed's own face, the window starts from the nearest face it
-    // does not: a window needs its start face.
-    SurfacePoint anchor = seed;
-    const auto window_over = [&](const std::vector<int32_t>& window_faces) {
-      SurfacePatch window;
-      window.radius = radius;
-      set_faces(mesh, window, window_faces);
-      const LayoutWindow unfolded = layout->unfold(window_faces, anchor.face, window.local_vertex_of_face_,
-                                                   static_cast<int32_t>(window.vertices.size()));
-      slit_open(window, unfolded.corner_uv, 1e-6 * radius);
-      measure_distortion(base, window, 1.0);
-      return window;
-    };
-    SurfacePatch slit = window_over(faces);
-    // The layout may fold a face or two round a cone, and a window round a cone of negative index
-    // wraps over itself: the window leaves out the faces folded, and the farther of two that
-    // overlap (a point over them goes to the nearest face), rather than give up the shared layout
-    // for the whole patch. Unfolded without them, it may reach round the cone the other way.
-    const int most = std::max<int>(1, static_cast<int>(faces.size()) / 50);
-    for (int round = 0; round < 4 && slit.flipped_faces <= most; ++round) {
-      std::vector<uint8_t> left_out(slit.faces.size(), 0);
-      if (slit.flipped_faces > 0) {
-        for (size_t k = 0; k < slit.faces.size(); ++k) {
-          const int32_t* v = &slit.local_vertex_of_face_[3 * k];
-          left_out[k] = cross2(slit.uv[v[1]] - slit.uv[v[0]], slit.uv[v[2]] - slit.uv[v[0]]) <= 0.0;
-        }
-        const size_t at = static_cast<size_t>(slit.face_index(anchor.face));
-        if (left_out[at]) {
-          double nearest = std::numeric_limits<double>::max();
-          for (size_t k = 0; k < slit.faces.size(); ++k) {
-            const double d = glm::distance(origin, base.position({slit.faces[k], glm::dvec2(1.0 / 3.0)}));
-            if (left_out[k] || d >= nearest) continue;
-            nearest = d;
-            anchor = {slit.faces[k], glm::dvec2(1.0 / 3.0)};
-          }
-          if (anchor.face == seed.face) break;
-        }
-      } else {
-        left_out = overlapping_faces(slit, mesh, origin);
-      }
-      std::vector<int32_t> kept_faces;
-      for (size_t k = 0; k < slit.faces.size(); ++k)
-        if (!left_out[k] || slit.faces[k] == anchor.face) kept_faces.push_back(slit.faces[k]);
-      if (kept_faces.size() == slit.faces.size()) break;
-      slit = window_over(connected_within(base, kept_faces, anchor.face));
-    }
-    if (slit.flipped_faces == 0) {
-      // The layout's scale changes over a window as it does over every window round it: a
-      // smaller window would change nothing.
-      slit.area_distortion = 1.0;
-      slit.chart = PatchChart::layout_window;
-      return centred(slit, anchor);
-    }
+    if (std::optional<SurfacePatch> window = window_of(base, seed, radius, faces, *layout)) return std::move(*window);
     const LayoutWindow window =
         layout->unfold(faces, seed.face, patch.local_vertex_of_face_, static_cast<int32_t>(patch.vertices.size()));
     std::vector<Vec3> face_field(mesh.num_faces(), Vec3(0.0));

@@ -71,6 +71,10 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
                                              const std::vector<int32_t>& corner_vertex,
                                              const std::vector<int32_t>& vertex_base);
 
+//! The faces reached along edges within `radius` of `seed` (a face joins when one of its
+//! vertices does; the seed's face always), cut open where they are no disk.
+std::vector<int32_t> ball_faces(const BaseSurface& base, const SurfacePoint& seed, double radius);
+
 //! Grows a patch from `seed` over the faces reachable along edges within `radius` (a face joins
 //! when one of its vertices does; distances start from the seed point) and flattens it by LSCM,
 //! scaled so the plane area equals the base area, translated so the seed is the origin. Where
@@ -86,5 +90,10 @@ std::vector<glm::dvec2> conformal_flattening(const BaseSurface& base, const std:
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
                                   const std::vector<Vec3>* face_field = nullptr,
                                   const BaseLayout* layout = nullptr);
+
+//! The patch grow_conformal_patch makes from a window of `layout`, without its fallbacks: nullopt
+//! where the window folds.
+std::optional<SurfacePatch> grow_layout_window(const BaseSurface& base, const SurfacePoint& seed, double radius,
+                                               const BaseLayout& layout);
 
 }  // namespace meshquilt

@@ -403,7 +403,8 @@ glm::dvec2 quarter_turned(const glm::dvec2& p, int quarter_turns) {
 }
 
 SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
-                               const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold) {
+                               const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold,
+                               double element_scale) {
   const TriMesh& mesh = base.mesh;
   SeamlessLayout layout;
   layout.symmetry = field.symmetry;
@@ -430,7 +431,8 @@ SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& fi
   cut_open(base, tree, layout);
   const int32_t wedges = make_wedges(base, layout);
   solve_layout(base, layout, wedges, 1.0, size_hold, nullptr);
-  const double scale = normalize_scale(base, layout, lattice.has_value());
+  const double scale = normalize_scale(base, layout, lattice.has_value()) * element_scale;
+  for (glm::dvec2& p : layout.uv) p /= element_scale;
   if (lattice) {
     round_to_lattice(base, layout, wedges, 1.0 / scale, size_hold, *lattice);
     layout.on_lattice = true;

@@ -50,10 +50,12 @@ inline constexpr double kDefaultSizeHold = 0.1;
 //! field's frame, against the conformal terms' 1: small keeps the layout conformal (round
 //! elements whose size follows the base's curvature), large evens the size and lets elements
 //! stretch (kDefaultSizeHold: conformal).
+//! element_scale: elements on the layout come out this many times the size its median holds
+//! (the layout shrunk by it before its seams are rounded).
 //! \throw SolverError when the solve fails.
 SeamlessLayout seamless_layout(const BaseSurface& base, const DirectionField& field,
                                const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt,
-                               double size_hold = kDefaultSizeHold);
+                               double size_hold = kDefaultSizeHold, double element_scale = 1.0);
 
 //! A set of base faces laid out from the layout, unfolded from `start` across cuts.
 struct LayoutWindow {

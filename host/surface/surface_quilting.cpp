@@ -33,6 +33,20 @@
 namespace meshquilt {
 namespace {
 
+// The filled median may be this far off the size asked before the layout is laid out again,
+// and is then brought this near.
+constexpr double kSizeTolerance = 0.02;
+constexpr double kSizeAim = 0.01;
+// Filled elements that tell their median (a tenth of it at least), and the share of the base
+// they must cover for it to stand for all (near cones and borders the patch step places
+// elements of other sizes).
+constexpr size_t kSizeSample = 2000;
+constexpr double kSizeCover = 0.8;
+// Cells within this share of a window's radius of a seed whose window folds seed no window.
+constexpr double kFailedReach = 0.25;
+// Layouts again at most.
+constexpr int kSizeRounds = 3;
+
 struct SurfaceElement {
   std::vector<LocalVertex> vertices;
   std::vector<int32_t> origins;  // the swatch vertex of each vertex (TriMesh::origins), or empty
@@ -165,29 +179,81 @@ class SurfaceDriver {
     return fill->any() ? std::move(fill) : nullptr;
   }
 
-  // Fills the pattern window by window, from every cell no earlier window held near its middle;
-  // then keeps the elements that meet none in space and marks the cells they cover.
+  // What one fill window placed, and the cells under it with their plane points.
+  struct FillRecord {
+    FilledWindow filled;
+    std::vector<std::pair<int32_t, glm::dvec2>> cells;
+  };
+
+  // Fills the pattern; where the filled elements cover most of the base and their median size is
+  // off the size asked, lays the same field out again to undo that and fills again (the layout's
+  // own median holds the median face, not the median element: bunny rings 7% small). Then marks
+  // the cells they cover.
   void fill_lattice() {
     if (!fill_) return;
+    std::vector<FillRecord> records = fill_windows();
+    // Rounding seams to periods moves the median less than the layout's scale: the second
+    // correction is a secant step in log size.
+    double correction = 1.0, last_correction = 1.0, last_size = 0.0;
+    for (int round = 0; round < (options_.median_from_fill ? kSizeRounds : 0); ++round) {
+      const double size = filled_median_size();
+      const double tolerance = round == 0 ? kSizeTolerance : kSizeAim;
+      if (!(size > 0.0) || std::abs(size - 1.0) <= tolerance || covered_share(records) < kSizeCover) break;
+      double gain = 1.0;
+      if (round > 0 && std::abs(std::log(correction / last_correction)) > 1e-9)
+        gain = std::clamp(std::log(size / last_size) / std::log(correction / last_correction), 0.3, 1.5);
+      last_correction = correction;
+      last_size = size;
+      correction *= std::exp(-std::log(size) / gain);
+      {
+        StageTimer timer(seconds_, "layout");
+        layout_->resize(correction);
+        stats_.on_lattice = layout_->layout().on_lattice;
+        stats_.size_correction = correction;
+      }
+      elements_.clear();
+      alive_.clear();
+      fill_ = make_fill();
+      if (!fill_) return;
+      records = fill_windows();
+    }
+    StageTimer timer(seconds_, "fill");
+    keep_apart_in_space();
+    for (const FillRecord& record : records)
+      for (const auto& [cell, p] : record.cells) {
+        if (seeds_.processed(cell) || !record.filled.covers(p, cell_, alive_)) continue;
+        seeds_.mark_processed(cell);
+        processed_area_ += cells_.areas[cell];
+      }
+    stats_.filled_elements = static_cast<int>(std::count(alive_.begin(), alive_.end(), 1));
+  }
+
+  // Places the pattern window by window, from every cell no earlier window held near its middle.
+  std::vector<FillRecord> fill_windows() {
     StageTimer timer(seconds_, "fill");
     const int total_cells = static_cast<int>(cells_.centres.size());
     std::vector<uint8_t> tried(total_cells, 0);
-    struct Record {
-      FilledWindow filled;
-      std::vector<std::pair<int32_t, glm::dvec2>> cells;  // under the window, with their plane points
-    };
-    std::vector<Record> records;
+    std::vector<FillRecord> records;
     for (int c = 0; c < total_cells; ++c) {
       if (tried[c]) continue;
       if (options_.cancel) options_.cancel->check();
       tried[c] = 1;
       // A window seeded where the pattern breaks would place little.
       if (fill_->near_break(cells_.centres[c])) continue;
-      SurfacePatch window = grow_conformal_patch(base_, cells_.centres[c], full_radius_, nullptr, layout_.get());
-      if (window.chart != PatchChart::layout_window || window.flipped_faces > 0) continue;
-      window.transform(0.0, 1.0 / unit_);
-      window.index();
-      Record record{fill_->fill(window, window.origin + lattice_->centre), {}};
+      std::optional<SurfacePatch> window = grow_layout_window(base_, cells_.centres[c], full_radius_, *layout_);
+      if (!window) {
+        // Windows from seeds this near would hold the fold this one does (the mannequin's
+        // layout folds 1% of its faces, scattered: 90% of its windows failed, one by one).
+        const Vec3 seed = base_.position(cells_.centres[c]);
+        const double reach = kFailedReach * full_radius_;
+        for (int32_t f : ball_faces(base_, cells_.centres[c], reach))
+          for (int32_t cell = cells_.face_offsets[f]; cell < cells_.face_offsets[f + 1]; ++cell)
+            if (glm::distance(base_.position(cells_.centres[cell]), seed) < reach) tried[cell] = 1;
+        continue;
+      }
+      window->transform(0.0, 1.0 / unit_);
+      window->index();
+      FillRecord record{fill_->fill(*window, window->origin + lattice_->centre), {}};
       for (FilledElement& f : record.filled.added) {
         SurfaceElement added;
         added.source = f.source;
@@ -200,22 +266,45 @@ class SurfaceDriver {
       }
       record.filled.added.clear();
       const double inner = 0.75 * full_radius_ / unit_;
-      for (int32_t f : window.faces)
+      for (int32_t f : window->faces)
         for (int32_t cell = cells_.face_offsets[f]; cell < cells_.face_offsets[f + 1]; ++cell) {
-          const glm::dvec2 p = window.to_plane(cells_.centres[cell]);
+          const glm::dvec2 p = window->to_plane(cells_.centres[cell]);
           if (glm::length(p) < inner) tried[cell] = 1;
           record.cells.emplace_back(cell, p);
         }
       records.push_back(std::move(record));
     }
-    keep_apart_in_space();
-    for (const Record& record : records)
+    return records;
+  }
+
+  // The share of the base's area whose cells the kept filled elements cover.
+  double covered_share(const std::vector<FillRecord>& records) const {
+    std::vector<uint8_t> covered(cells_.centres.size(), 0);
+    double area = 0.0;
+    for (const FillRecord& record : records)
       for (const auto& [cell, p] : record.cells) {
-        if (seeds_.processed(cell) || !record.filled.covers(p, cell_, alive_)) continue;
-        seeds_.mark_processed(cell);
-        processed_area_ += cells_.areas[cell];
+        if (covered[cell] || seeds_.processed(cell) || !record.filled.covers(p, cell_, alive_)) continue;
+        covered[cell] = 1;
+        area += cells_.areas[cell];
       }
-    stats_.filled_elements = static_cast<int>(std::count(alive_.begin(), alive_.end(), 1));
+    return total_area_ > 0.0 ? area / total_area_ : 0.0;
+  }
+
+  // The median filled element's size in space over the size asked, as the stats measure it,
+  // from at most kSizeSample of them spread over the fill; 0 with too few to tell.
+  double filled_median_size() {
+    if (elements_.size() < kSizeSample / 10) return 0.0;
+    const size_t stride = std::max<size_t>(1, elements_.size() / kSizeSample);
+    std::vector<double> sizes(elements_.size() / stride, 0.0);
+    tbb::parallel_for(size_t{0}, sizes.size(), [&](size_t k) {
+      SurfaceElement& element = elements_[k * stride];
+      fill_in_space(element);
+      const double asked = unit_ * gyration(swatch_.elements[element.source].positions);
+      if (asked > 0.0) sizes[k] = gyration(element.in_space) / asked;
+    });
+    const auto middle = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
+    std::nth_element(sizes.begin(), middle, sizes.end());
+    return *middle;
   }
 
   // Where the shell bends the pattern, or the base passes through itself, filled elements can

@@ -41,6 +41,9 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! How strongly that layout holds elements to one size against keeping them their shape
   //! (seamless_layout.h): 0.1 conformal, 3-10 even sizes with stretched elements.
   double size_hold = kDefaultSizeHold;
+  //! Where the pattern filled straight from the layout covers most of the base and its median
+  //! element is off the size asked, lays the layout out again to bring it to that size.
+  bool median_from_fill = true;
   //! Places local coordinates in space; empty: displacement along vertex normals.
   EmbeddingFactory embedding;
 };
@@ -68,6 +71,9 @@ struct SurfaceQuiltStats : QuiltStats {
   int intersecting_face_pairs = 0;  //!< face pairs of different elements meeting, before clean-up
   int synthesis_map_elements = 0;   //!< elements placed through the map synthesis decided on (place_elements)
   CopySizes element_size;           //!< whole copies' size over the size asked
+  //! The shared layout laid out again with elements this many times its median's size, so that
+  //! the filled median is the size asked (1: as first laid out).
+  double size_correction = 1.0;
 };
 
 //! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field).

@@ -152,6 +152,37 @@ TEST(SeamlessLayout, OnALatticeEverySeamContinuesByAPeriod) {
   EXPECT_EQ(rounded.flipped_faces, 0);
 }
 
+double layout_area(const BaseSurface& base, const SeamlessLayout& layout) {
+  double area = 0.0;
+  for (size_t f = 0; f < base.mesh.num_faces(); ++f) {
+    const glm::dvec2 a = layout.uv[layout.corner_wedge[3 * f]], b = layout.uv[layout.corner_wedge[3 * f + 1]],
+                     c = layout.uv[layout.corner_wedge[3 * f + 2]];
+    area += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  return area;
+}
+
+// Elements k times the size: the free layout is the same one shrunk by k; on a lattice its seams
+// still continue by periods, with about 1 / k^2 the area.
+TEST(SeamlessLayout, ElementScaleShrinksTheLayoutAndKeepsItsSeamsOnTheLattice) {
+  const TriMesh sphere = test::icosphere(3);
+  const BaseSurface base(sphere);
+  const DirectionField field = smoothest(base, 2);
+  const double k = 1.25;
+  const SeamlessLayout free = seamless_layout(base, field);
+  const SeamlessLayout free_scaled = seamless_layout(base, field, std::nullopt, kDefaultSizeHold, k);
+  ASSERT_EQ(free.uv.size(), free_scaled.uv.size());
+  for (size_t w = 0; w < free.uv.size(); ++w) EXPECT_NEAR(glm::length(free_scaled.uv[w] * k - free.uv[w]), 0.0, 1e-9);
+
+  const std::array<glm::dvec2, 2> lattice{glm::dvec2(0.13, 0.0), glm::dvec2(0.05, 0.21)};
+  const SeamlessLayout rounded = seamless_layout(base, field, lattice);
+  const SeamlessLayout scaled = seamless_layout(base, field, lattice, kDefaultSizeHold, k);
+  EXPECT_TRUE(scaled.on_lattice);
+  EXPECT_LT(worst_seam_off_lattice(base, scaled, lattice[0], lattice[1]), 1e-6);
+  EXPECT_EQ(scaled.flipped_faces, 0);
+  EXPECT_NEAR(layout_area(base, scaled) * k * k / layout_area(base, rounded), 1.0, 0.1);
+}
+
 // Plane position of every base vertex of a patch (the first copy where it is slit).
 std::map<int32_t, glm::dvec2> plane_of(const SurfacePatch& patch) {
   std::map<int32_t, glm::dvec2> result;
