@@ -224,6 +224,37 @@ TEST(SeamlessLayout, OverlappingWindowsDifferByASymmetryTurnAndATranslation) {
   EXPECT_GE(compared, 5);
 }
 
+// The layout window alone (what the fill asks for) is the patch grow_conformal_patch makes where
+// that patch is a layout window, and nothing where it falls back to another chart: balls that
+// cover the sphere's four cones fold.
+TEST(BaseLayout, AGrownLayoutWindowIsThePatchsWindowOrNone) {
+  const TriMesh sphere = test::icosphere(2);
+  const BaseSurface base(sphere);
+  std::vector<Vec3> target(sphere.num_faces(), Vec3(1.0, 0.0, 0.0));
+  const BaseLayout layout(base, 2, target, std::vector<double>(target.size(), default_field_weight(base)));
+  int windows = 0, none = 0;
+  for (const double radius : {0.6, 3.0})
+    for (int32_t face = 0; face < 320; face += 3) {
+      const SurfacePoint seed{face, glm::dvec2(0.3, 0.25)};
+      const SurfacePatch patch = grow_conformal_patch(base, seed, radius, nullptr, &layout);
+      const std::optional<SurfacePatch> window = grow_layout_window(base, seed, radius, layout);
+      ASSERT_EQ(window.has_value(), patch.chart == PatchChart::layout_window) << "seed face " << face;
+      if (!window) {
+        ++none;
+        continue;
+      }
+      ++windows;
+      EXPECT_EQ(window->faces, patch.faces);
+      EXPECT_EQ(window->vertices, patch.vertices);
+      ASSERT_EQ(window->uv.size(), patch.uv.size());
+      for (size_t k = 0; k < patch.uv.size(); ++k) EXPECT_EQ(window->uv[k], patch.uv[k]);
+      EXPECT_EQ(window->flipped_faces, 0);
+    }
+  std::printf("%d layout windows, %d folded\n", windows, none);
+  EXPECT_GT(windows, 100);
+  EXPECT_GT(none, 10);
+}
+
 // Whether a point lies inside a plane triangle by more than `margin` of its barycentrics.
 bool strictly_inside(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, double margin) {
   const double area = test::signed_area2(a, b, c);
