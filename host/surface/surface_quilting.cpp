@@ -202,15 +202,20 @@ class SurfaceDriver {
       double gain = 1.0;
       if (round > 0 && std::abs(std::log(correction / last_correction)) > 1e-9)
         gain = std::clamp(std::log(size / last_size) / std::log(correction / last_correction), 0.3, 1.5);
-      last_correction = correction;
-      last_size = size;
-      correction *= std::exp(-std::log(size) / gain);
+      const double next = correction * std::exp(-std::log(size) / gain);
       {
         StageTimer timer(seconds_, "layout");
-        layout_->resize(correction);
+        try {
+          layout_->resize(next);
+        } catch (const SolverError&) {
+          break;  // the layout and fill as they were
+        }
         stats_.on_lattice = layout_->layout().on_lattice;
-        stats_.size_correction = correction;
+        stats_.size_correction = next;
       }
+      last_correction = correction;
+      last_size = size;
+      correction = next;
       elements_.clear();
       alive_.clear();
       fill_ = make_fill();
