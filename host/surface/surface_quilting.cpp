@@ -224,12 +224,10 @@ class SurfaceDriver {
     }
     StageTimer timer(seconds_, "fill");
     keep_apart_in_space();
-    for (const FillRecord& record : records)
-      for (const auto& [cell, p] : record.cells) {
-        if (seeds_.processed(cell) || !record.filled.covers(p, cell_, alive_)) continue;
-        seeds_.mark_processed(cell);
-        processed_area_ += cells_.areas[cell];
-      }
+    for (const int32_t cell : covered_cells(records)) {
+      seeds_.mark_processed(cell);
+      processed_area_ += cells_.areas[cell];
+    }
     stats_.filled_elements = static_cast<int>(std::count(alive_.begin(), alive_.end(), 1));
   }
 
@@ -282,16 +280,23 @@ class SurfaceDriver {
     return records;
   }
 
-  // The share of the base's area whose cells the kept filled elements cover.
-  double covered_share(const std::vector<FillRecord>& records) const {
+  // The unprocessed cells the kept filled elements cover, each once, in the order of the records.
+  std::vector<int32_t> covered_cells(const std::vector<FillRecord>& records) const {
     std::vector<uint8_t> covered(cells_.centres.size(), 0);
-    double area = 0.0;
+    std::vector<int32_t> cells;
     for (const FillRecord& record : records)
       for (const auto& [cell, p] : record.cells) {
         if (covered[cell] || seeds_.processed(cell) || !record.filled.covers(p, cell_, alive_)) continue;
         covered[cell] = 1;
-        area += cells_.areas[cell];
+        cells.push_back(cell);
       }
+    return cells;
+  }
+
+  // The share of the base's area those cells make.
+  double covered_share(const std::vector<FillRecord>& records) const {
+    double area = 0.0;
+    for (const int32_t cell : covered_cells(records)) area += cells_.areas[cell];
     return total_area_ > 0.0 ? area / total_area_ : 0.0;
   }
 
