@@ -117,7 +117,6 @@ SynthRequest synth_request(const SynthArgs& args, const SynthSettings& settings)
   request.fill_margin = args.fill_margin;
   request.symmetry = args.symmetry;
   request.size_hold = args.size_hold;
-  request.close_cones = args.close_cones;
   request.shell_height = args.shell_height;
   request.embed = args.embed;
   request.shared_layout = args.shared_layout;

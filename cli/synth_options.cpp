@@ -32,9 +32,6 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
                   "(0.1: conformal, round rings whose size follows the base's curvature; 3-10: even sizes, "
                   "stretched rings)")
       ->capture_default_str();
-  cmd->add_flag("--close-cones", args.close_cones,
-                "with --base and a ring mail: add rings round the layout's cones where rings there link two or "
-                "more fewer than the pattern's");
   cmd->add_option("--shell-height", args.shell_height,
                   "with --base: layer height in base units (default: the swatch's thickness at --scale)");
   cmd->add_option("--write-field", args.write_field, "with --base: write the field used as OBJ line segments");

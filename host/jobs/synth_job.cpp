@@ -80,10 +80,6 @@ void add_curved_stats(const SynthRequest& request, const SurfaceQuiltStats& stat
   out["cone_points"] = nlohmann::json::array();
   for (const Vec3& p : stats.cone_points) out["cone_points"].push_back({p.x, p.y, p.z});
   out["cone_indices"] = stats.cone_indices;
-  out["cone_closure"] = {{"removed", stats.cone_rings_removed},
-                         {"added", stats.cone_rings_added},
-                         {"short_before", stats.cone_rings_short_before},
-                         {"short_after", stats.cone_rings_short_after}};
   out["outside_vertices"] = stats.outside_vertices;
   out["shell_height"] = stats.shell_height;
   out["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;
@@ -165,7 +161,6 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
     options.shared_layout = request.shared_layout;
     options.symmetry = request.symmetry;
     options.size_hold = request.size_hold;
-    options.close_cones = request.close_cones;
     const BaseSurface surface(inputs.base);
     const GuidanceField field = interpolate_field(surface, request.field);
     if (hooks.field_ready) hooks.field_ready(surface, field);

@@ -50,7 +50,6 @@ class LatticeFill {
 
   //! Some class stands alone: there is something to fill.
   bool any() const;
-  const std::vector<LatticeClass>& classes() const { return classes_; }
   //! Places the pattern over a layout window (in swatch units, transformed and indexed): every
   //! element of a class that stands alone, at every period where it lies wholly in the window,
   //! farther than the margin from a break and unplaced before.

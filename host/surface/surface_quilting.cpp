@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <random>
 #include <unordered_map>
@@ -29,11 +28,6 @@
 #include "surface/element_placement.h"
 #include "surface/lattice_fill.h"
 #include "surface/base_layout.h"
-#include "surface/cone_closure.h"
-#include "inspect/ring_links.h"
-#include "spatial/closest_point.h"
-#include "spatial/segment_distance.h"
-#include "inspect/element_statistics.h"
 #include "surface/surface_cells.h"
 
 namespace meshquilt {
@@ -52,12 +46,6 @@ constexpr double kSizeCover = 0.8;
 constexpr double kFailedReach = 0.25;
 // Layouts again at most.
 constexpr int kSizeRounds = 3;
-// Closing the mail round a cone: turns of each ring tried, the share of the pattern's least
-// distance between rings that two rings keep there, and how far from every ring kept a ring may be
-// added (in ring radii: a hole's nearest ring centre lies a ring's radius away).
-constexpr int kClosureTurns = 16;
-constexpr double kClosureClearance = 0.8;
-constexpr double kClosureHole = 0.6;
 
 struct SurfaceElement {
   std::vector<LocalVertex> vertices;
@@ -356,7 +344,6 @@ class SurfaceDriver {
     // What the fill covered shows before the first patch.
     if (fill_ && options_.progress) options_.progress(surface.progress());
     run_seed_loop(seeds_, holes_, options_, stats_, surface);
-    close_round_cones();
     return finish();
   }
 
@@ -423,181 +410,6 @@ class SurfaceDriver {
     request.refine = false;
     request.reject_covered_inputs = false;
     request.contacts = contacts_.get();
-  }
-
-  // The swatch's rings as the closure adds them: each class's element, its centre line and wire.
-  struct MailRing {
-    int32_t element = -1;
-    glm::dvec2 centroid{0.0};
-    std::vector<Vec3> line;  // centre line, swatch frame
-  };
-  struct Mail {
-    std::vector<MailRing> rings;
-    int links = 0;         // of a ring inside the swatch
-    double radius = 0.0;   // of the centre line, swatch units
-    double gap = 0.0;      // least distance between two rings' centre lines, swatch units
-  };
-
-  std::optional<Mail> swatch_mail() const {
-    const auto elements = static_cast<int32_t>(swatch_.elements.size());
-    const RingLinks links = ring_links(swatch_.mesh, swatch_.mesh.elements, elements);
-    Mail mail;
-    mail.links = *std::max_element(links.links_per_ring.begin(), links.links_per_ring.end());
-    if (mail.links < 3) return std::nullopt;  // no mail: rings hang in chains or not at all
-    const std::vector<RingCentreLine> lines =
-        ring_centre_lines(swatch_.mesh, swatch_.mesh.elements, elements);
-    for (const LatticeClass& c : fill_->classes()) {
-      if (!c.alone) continue;
-      const RingCentreLine& line = lines[c.element];
-      if (line.points.size() < 3) return std::nullopt;
-      mail.rings.push_back({c.element, c.centroid, line.points});
-      mail.radius = std::max(mail.radius, line.radius);
-    }
-    if (mail.rings.empty()) return std::nullopt;
-    // How near the pattern itself brings two rings (centre lines binned from the wire's surface
-    // run inside it, so not twice the wire's radius).
-    mail.gap = std::numeric_limits<double>::infinity();
-    for (int32_t a = 0; a < elements; ++a)
-      for (int32_t b = a + 1; b < elements; ++b)
-        if (lines[a].points.size() >= 3 && lines[b].points.size() >= 3 &&
-            glm::length(lines[a].centre - lines[b].centre) < 2.5 * mail.radius)
-          mail.gap = std::min(mail.gap, centre_line_distance(lines[a].points, lines[b].points));
-    if (!std::isfinite(mail.gap)) return std::nullopt;
-    return mail;
-  }
-
-  // A ring mail cannot link every ring as its pattern does where the layout turns by a half turn
-  // about a point: there it is closed as a mail maker would (surface/cone_closure.h).
-  void close_round_cones() {
-    if (!options_.close_cones || !fill_ || !layout_ || layout_->cones() == 0) return;
-    StageTimer timer(seconds_, "cones");
-    const std::optional<Mail> mail = swatch_mail();
-    if (!mail) return;
-    for (const auto& [face, point] : layout_->cone_points()) close_round(face, point, *mail);
-  }
-
-  void close_round(int32_t face, const Vec3& cone, const Mail& mail) {
-    const double asked = mail.radius * unit_;  // a ring's radius in space, as asked
-    Box3 reach;
-    reach.lo = cone - Vec3(8.0 * asked);
-    reach.hi = cone + Vec3(8.0 * asked);
-    std::vector<size_t> near;
-    std::vector<ClosureRing> rings;
-    std::vector<double> radii;
-    for (size_t e = 0; e < elements_.size(); ++e) {
-      if (!alive_[e] || !elements_[e].bounds.overlaps(reach)) continue;
-      fill_in_space(elements_[e]);
-      TriMesh in_space;
-      in_space.positions = elements_[e].in_space;
-      in_space.triangles = elements_[e].triangles;
-      const RingCentreLine line =
-          ring_centre_lines(in_space, std::vector<int32_t>(in_space.triangles.size(), 0), 1).front();
-      if (line.points.size() < 3 || glm::length(line.centre - cone) > 7.0 * asked) continue;
-      if (glm::length(line.centre - cone) < 3.0 * asked) radii.push_back(line.radius);
-      near.push_back(e);
-      rings.push_back(closure_ring(line.points));
-    }
-    if (radii.empty()) return;
-    // Rings round a cone run small or large with the layout's scale there: the closing ones too.
-    const double s = median(radii) / asked;
-    const double core = 2.5 * s * asked;
-    // Every ring that links a ring of the core, and no farther.
-    for (size_t i = rings.size(); i-- > 0;)
-      if (glm::length(rings[i].centre - cone) > core + 3.0 * s * asked) {
-        rings.erase(rings.begin() + static_cast<std::ptrdiff_t>(i));
-        near.erase(near.begin() + static_cast<std::ptrdiff_t>(i));
-      }
-    std::vector<uint8_t> in_core(rings.size());
-    for (size_t i = 0; i < rings.size(); ++i) in_core[i] = glm::length(rings[i].centre - cone) < core;
-
-    // Candidates: each ring of the swatch, turned and moved over a grid round the cone in a
-    // conformal patch there, scaled as the rings round it.
-    const TriMesh& base = base_.mesh;
-    const Tri& corners = base.triangles[face];
-    const Vec3 b = closest_point_on_triangle(cone, base.positions[corners[0]], base.positions[corners[1]],
-                                             base.positions[corners[2]]).barycentric;
-    SurfacePatch patch = grow_conformal_patch(base_, SurfacePoint{face, glm::dvec2(b.y, b.z)}, 1.5 * core);
-    patch.transform(0.0, 1.0 / unit_);
-    patch.index();
-    struct Placement {
-      size_t ring;
-      glm::dvec2 at;
-      double angle;
-    };
-    std::vector<Placement> placements;
-    const double plane_core = core / unit_, step = 0.5 * s * mail.radius;
-    const int steps = static_cast<int>(std::ceil(plane_core / step));
-    const auto to_plane = [&](const Placement& p, const Vec3& x, const glm::dvec2& centroid) {
-      const glm::dvec2 d = s * (glm::dvec2(x) - centroid);
-      const double c = std::cos(p.angle), sn = std::sin(p.angle);
-      return p.at + glm::dvec2(c * d.x - sn * d.y, sn * d.x + c * d.y);
-    };
-    const auto candidates = [&](const std::vector<uint8_t>& kept) {
-      // Only where the rings kept leave a hole.
-      std::vector<glm::dvec2> kept_centres;
-      for (size_t i = 0; i < rings.size(); ++i) {
-        if (!kept[i]) continue;
-        glm::dvec2 sum(0.0);
-        int in = 0;
-        for (const LocalVertex& v : elements_[near[i]].vertices)
-          if (patch.face_index(v.point.face) >= 0) {
-            sum += patch.to_plane(v.point);
-            ++in;
-          }
-        if (in > 0) kept_centres.push_back(sum / static_cast<double>(in));
-      }
-      std::vector<ClosureRing> out;
-      for (int i = -steps; i <= steps; ++i)
-        for (int j = -steps; j <= steps; ++j) {
-          const glm::dvec2 at = step * glm::dvec2(i, j);
-          if (glm::length(at) > plane_core) continue;
-          const bool hole = std::all_of(kept_centres.begin(), kept_centres.end(), [&](const glm::dvec2& c) {
-            return glm::length(c - at) > kClosureHole * s * mail.radius;
-          });
-          if (!hole) continue;
-          for (size_t r = 0; r < mail.rings.size(); ++r)
-            for (int k = 0; k < kClosureTurns; ++k) {
-              const Placement p{r, at, 2.0 * std::numbers::pi * k / kClosureTurns};
-              std::vector<Vec3> line;
-              for (const Vec3& x : mail.rings[r].line) {
-                const std::optional<SurfacePoint> on = patch.locate(to_plane(p, x, mail.rings[r].centroid));
-                if (!on) break;
-                line.push_back(embedding_->position_during_synthesis(*on, x.z * height_unit_));
-              }
-              if (line.size() != mail.rings[r].line.size()) continue;
-              placements.push_back(p);
-              out.push_back(closure_ring(std::move(line)));
-            }
-        }
-      return out;
-    };
-
-    ClosureOptions closure;
-    closure.links = mail.links;
-    closure.clearance = kClosureClearance * mail.gap * s * unit_;
-    const ClosurePlan plan = plan_closure(rings, in_core, candidates, closure);
-    for (int32_t i : plan.removed) alive_[near[i]] = 0;
-    for (int32_t c : plan.added) {
-      const Placement& p = placements[c];
-      const MailRing& ring = mail.rings[p.ring];
-      const TriMesh& source = swatch_.elements[ring.element];
-      SurfaceElement added;
-      added.source = ring.element;
-      for (const Vec3& x : source.positions) {
-        const glm::dvec2 q = to_plane(p, x, ring.centroid);
-        const std::optional<SurfacePoint> at = patch.locate(q);
-        added.vertices.push_back({at ? *at : patch.nearest(q), x.z * height_unit_});
-      }
-      added.origins = source.origins;
-      added.triangles = source.triangles;
-      update_bounds(added, base_);
-      elements_.push_back(std::move(added));
-      alive_.push_back(1);
-    }
-    stats_.cone_rings_removed += static_cast<int>(plan.removed.size());
-    stats_.cone_rings_added += static_cast<int>(plan.added.size());
-    stats_.cone_rings_short_before += plan.short_before;
-    stats_.cone_rings_short_after += plan.short_after;
   }
 
   // A cell that a patch seeded on it did not cover is seeded again with twice the distortion

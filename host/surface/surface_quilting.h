@@ -44,9 +44,6 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! Where the pattern filled straight from the layout covers most of the base and its median
   //! element is off the size asked, lays the layout out again to bring it to that size.
   bool median_from_fill = true;
-  //! A ring mail is closed round each of the layout's cones (surface/cone_closure.h): off by
-  //! default, as it finds few places over the shared bases for its cost (docs/decisions/0059).
-  bool close_cones = false;
   //! Places local coordinates in space; empty: displacement along vertex normals.
   EmbeddingFactory embedding;
 };
@@ -77,10 +74,6 @@ struct SurfaceQuiltStats : QuiltStats {
   //! The shared layout laid out again with elements this many times its median's size, so that
   //! the filled median is the size asked (1: as first laid out).
   double size_correction = 1.0;
-  //! Closing a ring mail round the cones: rings taken out and added there, and rings within
-  //! about two rings of a cone linked to fewer than one under the pattern's links, before and after.
-  int cone_rings_removed = 0, cone_rings_added = 0;
-  int cone_rings_short_before = 0, cone_rings_short_after = 0;
 };
 
 //! Grows a layer of `swatch` over `base` oriented by `field` (interpolate_field).
