@@ -1,6 +1,7 @@
 // `meshquilt inspect MESH [--swatch S] [--plane | --base B [--shell-height H]] [--json]`: the
 // quality report of a mesh (DESIGN.md section 8).
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -28,7 +29,25 @@ struct InspectArgs {
   bool json = false;
   bool rings = false;
   bool yarns = false;
+  std::filesystem::path near_cones;
+  double near_radius = 3.0;
 };
+
+// The cone points synth's --stats file lists.
+std::vector<Vec3> read_cone_points(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot be read", ErrorKind::file_unreadable);
+  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  if (stats.is_discarded() || !stats.is_object() || !stats.contains("cone_points") || !stats["cone_points"].is_array())
+    throw InputError(file.string() + ": not a synth --stats file over a base (no cone_points)", ErrorKind::invalid_option);
+  std::vector<Vec3> points;
+  for (const nlohmann::json& p : stats["cone_points"]) {
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+      throw InputError(file.string() + ": a cone point that is not three numbers", ErrorKind::invalid_option);
+    points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  }
+  return points;
+}
 
 }  // namespace
 
@@ -72,6 +91,14 @@ void add_inspect_command(CLI::App& app) {
                 "the link graph of the elements taken as rings (chain mail): links per ring, pieces, "
                 "median ring radius; with --swatch its ratio to the swatch's and, with --plane or --base, "
                 "missing rings");
+  auto* near = cmd->add_option("--near-cones", args->near_cones,
+                               "with --rings: synth's --stats file; also the links and sizes of the rings near "
+                               "the layout's cones it lists");
+  near->needs(cmd->get_option("--rings"));
+  cmd->add_option("--near-radius", args->near_radius, "with --near-cones: how near, in median ring radii")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str()
+      ->needs(near);
   cmd->add_flag("--yarns", args->yarns,
                 "yarn lengths: each closed element taken as a tube (length A^2 / (4 pi V)); the "
                 "length-weighted median, and with --swatch in swatch lengths");
@@ -87,6 +114,10 @@ void add_inspect_command(CLI::App& app) {
     options.plane = args->plane;
     options.rings = args->rings;
     options.yarns = args->yarns;
+    if (!args->near_cones.empty()) {
+      options.near_points = read_cone_points(args->near_cones);
+      options.near_radius = args->near_radius;
+    }
     if (!args->region.empty())
       options.plane_options.region = {{args->region[0], args->region[1]}, {args->region[2], args->region[3]}};
     options.mesh_name = args->mesh.string();

@@ -143,7 +143,16 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   timer.lap("element sizes");
 
   if (options.rings) {
-    report.rings = ring_report(ring_links(mesh, topology.face_element, topology.elements));
+    const RingLinks links = ring_links(mesh, topology.face_element, topology.elements);
+    report.rings = ring_report(links);
+    if (!options.near_points.empty()) {
+      InspectReport::Rings::Near near;
+      near.points = static_cast<int32_t>(options.near_points.size());
+      near.radius = options.near_radius * links.median_radius;
+      near.rings = rings_near(links, ring_centre_lines(mesh, topology.face_element, topology.elements),
+                              options.near_points, near.radius);
+      report.rings->near = near;
+    }
     timer.lap("rings");
   }
   if (options.yarns) {
@@ -277,6 +286,20 @@ nlohmann::ordered_json to_json(const InspectReport& r) {
       k["expected_rings"] = *r.rings->expected_rings;
       k["missing_rings"] = *r.rings->expected_rings - r.rings->rings;
     }
+    if (r.rings->near) {
+      const RingsNear& n = r.rings->near->rings;
+      nlohmann::ordered_json near = {{"points", r.rings->near->points}, {"radius", r.rings->near->radius},
+                             {"rings", n.rings}, {"links_histogram", n.histogram},
+                             {"linked_to_3_share", n.linked_to_3_share}, {"loose_rings", n.loose_rings},
+                             {"median_radius", n.median_radius}, {"radius_p10", n.radius_p10},
+                             {"radius_p90", n.radius_p90}};
+      if (r.rings->asked_radius && n.rings > 0) {
+        const double asked = *r.rings->asked_radius;
+        near["radius_over_asked"] = {{"p10", n.radius_p10 / asked}, {"median", n.median_radius / asked},
+                                     {"p90", n.radius_p90 / asked}};
+      }
+      k["near"] = near;
+    }
     j["rings"] = k;
   }
   if (r.yarns) {
@@ -336,6 +359,16 @@ std::string to_text(const InspectReport& r) {
         << k.radius_p90 / *k.asked_radius << " (p10 / median / p90 of radius over the " << *k.asked_radius
         << " asked)\n";
     s << "ring aspect:   median " << k.median_aspect << ", p90 " << k.aspect_p90 << " (longest over shortest axis)\n";
+    if (k.near) {
+      const RingsNear& n = k.near->rings;
+      s << "near points:   " << n.rings << " rings within " << k.near->radius << " of " << k.near->points << " points; "
+        << 100.0 * n.linked_to_3_share << "% linked to >= 3, " << n.loose_rings << " loose; links ";
+      for (size_t c = 0; c < n.histogram.size(); ++c) s << (c ? ", " : "") << c << ": " << n.histogram[c];
+      s << "\n";
+      if (k.asked_radius && n.rings > 0)
+        s << "near, asked:   " << n.radius_p10 / *k.asked_radius << " / " << n.median_radius / *k.asked_radius << " / "
+          << n.radius_p90 / *k.asked_radius << " (p10 / median / p90 of their radius over the asked)\n";
+    }
   }
   if (r.yarns) {
     s << "yarns:         " << r.yarns->yarns << " yarns, length-weighted median length " << r.yarns->weighted_median_length;

@@ -12,6 +12,7 @@
 
 #include "inspect/coverage.h"
 #include "mesh/topology.h"
+#include "inspect/ring_links.h"
 #include "mesh/tri_mesh.h"
 
 namespace meshquilt {
@@ -22,6 +23,9 @@ struct InspectOptions {
   std::optional<double> shell_height;      //!< H for --base, in units of the base's bbox diagonal
   bool rings = false;                      //!< the link graph of the elements taken as rings
   bool yarns = false;                      //!< the elements' lengths taken as tubes (yarns)
+  //! With rings: also the rings within near_radius median ring radii of these points (cones).
+  std::vector<Vec3> near_points;
+  double near_radius = 3.0;
   //! With a swatch and a base: the scale synth was asked for (the swatch's longer side over the
   //! base's bounding-box diagonal), so that ring radii are reported over the radius asked.
   std::optional<double> scale;
@@ -77,6 +81,13 @@ struct InspectReport {
     //! With a swatch, a base and a scale: the radius the scale asks for.
     std::optional<double> asked_radius;
     std::optional<double> expected_rings;  //!< with a swatch and a plane or base: its ring density x area
+    //! With near_points: the rings near them (radius in mesh units).
+    struct Near {
+      int32_t points = 0;
+      double radius = 0.0;
+      RingsNear rings;
+    };
+    std::optional<Near> near;
   };
   std::optional<Rings> rings;
 

@@ -110,6 +110,32 @@ double linking_number(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   return total / (4.0 * std::numbers::pi);
 }
 
+RingsNear rings_near(const RingLinks& links, const std::vector<RingCentreLine>& lines, const std::vector<Vec3>& points,
+                     double radius) {
+  RingsNear near;
+  std::vector<double> radii;
+  for (size_t e = 0; e < lines.size(); ++e) {
+    if (lines[e].points.empty()) continue;
+    const bool close = std::any_of(points.begin(), points.end(),
+                                   [&](const Vec3& p) { return glm::length(lines[e].centre - p) <= radius; });
+    if (!close) continue;
+    const int32_t count = links.links_per_ring[e];
+    if (near.histogram.size() <= static_cast<size_t>(count)) near.histogram.resize(count + 1, 0);
+    ++near.histogram[count];
+    ++near.rings;
+    near.loose_rings += count == 0;
+    near.linked_to_3_share += count >= 3;
+    radii.push_back(lines[e].radius);
+  }
+  if (near.rings == 0) return near;
+  near.linked_to_3_share /= near.rings;
+  std::sort(radii.begin(), radii.end());
+  near.median_radius = median(radii);
+  near.radius_p10 = nearest_rank(radii, 0.1);
+  near.radius_p90 = nearest_rank(radii, 0.9);
+  return near;
+}
+
 RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements) {
   RingLinks result;
   const std::vector<RingCentreLine> lines = ring_centre_lines(mesh, face_element, elements);

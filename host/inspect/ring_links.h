@@ -47,6 +47,20 @@ struct RingLinks {
   double median_aspect = 1.0, aspect_p90 = 1.0;    //!< of the centre lines' aspects
 };
 
+//! The rings whose centre lines' centres lie within `radius` of one of `points` (a layout's cones,
+//! say), with their links counted over the whole mail.
+struct RingsNear {
+  int32_t rings = 0;
+  std::vector<int32_t> histogram;   //!< of them, with 0, 1, 2, ... links
+  double linked_to_3_share = 0.0;   //!< of them, linked to >= 3 others
+  int32_t loose_rings = 0;
+  double median_radius = 0.0, radius_p10 = 0.0, radius_p90 = 0.0;  //!< of their centre lines
+};
+
+//! \pre lines and links of the same mesh (ring_centre_lines, ring_links).
+RingsNear rings_near(const RingLinks& links, const std::vector<RingCentreLine>& lines, const std::vector<Vec3>& points,
+                     double radius);
+
 //! Rings whose centre lines could meet (centres closer than the sum of their radii plus a
 //! margin) are tested by linking_number. \pre as ring_centre_lines.
 RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements);

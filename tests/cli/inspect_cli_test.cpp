@@ -226,6 +226,43 @@ TEST_F(InspectCli, RegionReplacesTheFootprint) {
   EXPECT_TRUE(one_line_naming(empty.err, "region")) << empty.err;
 }
 
+// Rings near points a synth --stats file lists as cones: a linked pair and a loose ring.
+TEST_F(InspectCli, RingsNearTheConesOfAStatsFile) {
+  TriMesh m = torus({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12);
+  for (const TriMesh& b : {torus({1, 0, 0}, {1, 0, 0}, {0, 0, 1}, 1.0, 0.25, 32, 12),
+                           torus({10, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 0.25, 32, 12)}) {
+    const auto n = static_cast<int32_t>(m.positions.size());
+    m.positions.insert(m.positions.end(), b.positions.begin(), b.positions.end());
+    for (const Tri& t : b.triangles) m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  }
+  const fs::path file = dir_ / "rings.ply", stats = dir_ / "stats.json";
+  write_mesh(m, file);
+  std::ofstream(stats) << R"({"cones": 2, "cone_points": [[0.5, 0, 0], [10, 0, 0.5]]})";
+
+  const CliRun r = run({file.string(), "--json", "--rings", "--near-cones", stats.string(), "--near-radius", "1.5"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json near = nlohmann::json::parse(r.out).at("rings").at("near");
+  EXPECT_EQ(near.at("points").get<int>(), 2);
+  EXPECT_EQ(near.at("rings").get<int>(), 3);
+  EXPECT_EQ(near.at("loose_rings").get<int>(), 1);
+  EXPECT_EQ(near.at("links_histogram").get<std::vector<int>>(), (std::vector<int>{1, 2}));
+  // 1.5 median ring radii: the loose ring's centre is 0.5 from its point, the pair's 0.5 from theirs.
+  EXPECT_NEAR(near.at("radius").get<double>(), 1.5, 0.05);
+  const CliRun tight = run({file.string(), "--json", "--rings", "--near-cones", stats.string(), "--near-radius", "0.4"});
+  ASSERT_EQ(tight.code, 0) << tight.err;
+  EXPECT_EQ(nlohmann::json::parse(tight.out).at("rings").at("near").at("rings").get<int>(), 0);
+
+  const fs::path other = dir_ / "other.json";
+  std::ofstream(other) << R"({"elements": 3})";
+  const CliRun wrong = run({file.string(), "--rings", "--near-cones", other.string()});
+  EXPECT_EQ(wrong.code, 6);  // ErrorKind::invalid_option
+  EXPECT_TRUE(one_line_naming(wrong.err, "other.json")) << wrong.err;
+  const CliRun missing = run({file.string(), "--rings", "--near-cones", (dir_ / "none.json").string()});
+  EXPECT_EQ(missing.code, 3);  // ErrorKind::file_unreadable
+  EXPECT_TRUE(one_line_naming(missing.err, "none.json")) << missing.err;
+  EXPECT_EQ(run({file.string(), "--near-cones", stats.string()}).code, 2);  // needs --rings
+}
+
 TEST_F(InspectCli, BrokenAndMissingFilesGiveOneLineErrors) {
   const fs::path broken = dir_ / "broken.off";
   std::ofstream(broken) << "OFF\n4 2 0\n0 0 0\n1 0 0\n";  // truncated

@@ -140,6 +140,35 @@ TEST(RingLinks, AChainOfTorusRings) {
   EXPECT_EQ(links.histogram[2], 3);
 }
 
+TEST(RingLinks, TheRingsNearAPointOfAChainWithTheirLinks) {
+  // Five rings at x = 0, 1.5, 3, 4.5, 6, each through the next; rings of radius 2 apart from them.
+  TriMesh chain;
+  for (int r = 0; r < 5; ++r) chain = join_elements({chain, torus(Vec3(1.5 * r, 0, 0), X, r % 2 ? Z : Y, 1.0, 0.1, r)});
+  chain = join_elements({chain, torus(Vec3(0, 20, 0), X, Y, 2.0, 0.1, 5)});
+  int32_t elements = 0;
+  const std::vector<int32_t> face_element = face_components(chain, &elements);
+  const RingLinks links = ring_links(chain, face_element, elements);
+  const std::vector<RingCentreLine> lines = ring_centre_lines(chain, face_element, elements);
+
+  // Within 1.6 of the first ring's centre: the first (one link) and the second (two).
+  const RingsNear end = rings_near(links, lines, {Vec3(0, 0, 0)}, 1.6);
+  EXPECT_EQ(end.rings, 2);
+  EXPECT_EQ(end.histogram, (std::vector<int32_t>{0, 1, 1}));
+  EXPECT_EQ(end.linked_to_3_share, 0.0);
+  EXPECT_EQ(end.loose_rings, 0);
+  EXPECT_NEAR(end.median_radius, 1.0, 0.02);
+
+  // Two points: the chain's middle ring and the loose large one.
+  const RingsNear two = rings_near(links, lines, {Vec3(3, 0, 0), Vec3(0, 20, 0)}, 0.5);
+  EXPECT_EQ(two.rings, 2);
+  EXPECT_EQ(two.histogram, (std::vector<int32_t>{1, 0, 1}));
+  EXPECT_EQ(two.loose_rings, 1);
+  EXPECT_NEAR(two.radius_p10, 1.0, 0.02);
+  EXPECT_NEAR(two.radius_p90, 2.0, 0.04);
+
+  EXPECT_EQ(rings_near(links, lines, {Vec3(0, -50, 0)}, 1.0).rings, 0);
+}
+
 TEST(RingLinks, RadiusPercentilesOfRingsOfTenSizes) {
   // Ten loose rings of radius 1, 2, ..., 10: the 10th and 90th percentiles are rings 2 and 9.
   TriMesh rings;
