@@ -6,7 +6,9 @@
 // laid out again by the filled rings' median it is within 5% (decision 0058).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -144,6 +146,35 @@ TEST(WeaveOverABase, YarnsContinueAndStayInTheShell) {
   EXPECT_LE(highest, shell + radius);
   EXPECT_GE(lowest, -radius);
   EXPECT_GE(report.at("coverage").get<double>(), 0.95);
+  std::filesystem::remove_all(dir);
+}
+
+// How the mail closes round the sphere's four half-turn cones (decision 0059): rings there link
+// one fewer, none links five, and every ring of the whole linked to fewer than four lies within
+// three ring radii of a cone (`inspect --near-cones`).
+TEST(ConeClosure, TheSphereMailLinksFewerOnlyRoundItsCones) {
+  const auto base = std::filesystem::path(MESHQUILT_SOURCE_DIR) / "data/sphere.off";
+  const auto dir = test::scratch_dir("element_size_cones");
+  Job job;
+  ASSERT_NO_FATAL_FAILURE(run_job(dir, "chainmail --rows 6 --columns 5 --ring-segments 16 --wire-segments 6", base,
+                                  "--rings --near-cones '" + (dir / "stats.json").string() + "'", &job, "--seed 1"));
+  const nlohmann::json& rings = job.report.at("rings");
+  const nlohmann::json& near = rings.at("near");
+  const auto whole = rings.at("links_histogram").get<std::vector<int>>();
+  const auto round_cones = near.at("links_histogram").get<std::vector<int>>();
+  const auto under_four = [](const std::vector<int>& histogram) {
+    int n = 0;
+    for (size_t k = 0; k < std::min<size_t>(4, histogram.size()); ++k) n += histogram[k];
+    return n;
+  };
+  std::printf("sphere: %d rings near %d cones, %d of them linked to fewer than four, %d in the whole\n",
+              near.at("rings").get<int>(), near.at("points").get<int>(), under_four(round_cones), under_four(whole));
+  EXPECT_EQ(near.at("points").get<int>(), job.stats.at("cones").get<int>());
+  EXPECT_LE(whole.size(), 5u);  // no ring links five or more
+  EXPECT_GT(under_four(round_cones), 0);  // a cone costs links
+  EXPECT_EQ(under_four(round_cones), under_four(whole));
+  EXPECT_EQ(near.at("loose_rings").get<int>(), 0);
+  EXPECT_GE(near.at("linked_to_3_share").get<double>(), 0.98);
   std::filesystem::remove_all(dir);
 }
 
