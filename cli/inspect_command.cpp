@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "inspect/inspect_report.h"
+#include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "mesh/swatch_frame.h"
 
@@ -109,7 +110,9 @@ void add_inspect_command(CLI::App& app) {
     std::optional<TriMesh> swatch, base_mesh;
     // The swatch as synth reads it: repaired and turned into its frame.
     if (!args->swatch.empty()) swatch = orient_swatch(read_mesh(args->swatch), args->swatch.string());
-    if (!args->base.empty()) base_mesh = read_mesh(args->base);
+    // The base as synth reads it: repaired and each part wound outward, so heights are measured
+    // on the side synth grew the layer.
+    if (!args->base.empty()) base_mesh = prepare_base(read_mesh(args->base), args->base.string());
     InspectOptions options;
     options.plane = args->plane;
     options.rings = args->rings;

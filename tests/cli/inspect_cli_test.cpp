@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -205,6 +206,40 @@ TEST_F(InspectCli, BaseHeightsAndReadableReport) {
   ASSERT_EQ(text.code, 0);
   EXPECT_NE(text.out.find("elements:"), std::string::npos);
   EXPECT_NE(text.out.find("1, of which 1 closed"), std::string::npos);
+}
+
+// A base wound inward, as some files come, is read as synth reads it (each part turned outward):
+// heights of a ring above a dome come out the same from either winding.
+TEST_F(InspectCli, BaseHeightsDoNotDependOnTheBasesWinding) {
+  TriMesh dome;  // the upper half of a unit sphere, open at its rim, wound outward
+  const int rings = 8, around = 24;
+  dome.positions.push_back({0, 0, 1});
+  for (int i = 1; i <= rings; ++i)
+    for (int k = 0; k < around; ++k) {
+      const double polar = 0.5 * std::numbers::pi * i / rings, azimuth = 2.0 * std::numbers::pi * k / around;
+      dome.positions.push_back({std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar)});
+    }
+  const auto at = [&](int i, int k) { return i == 0 ? 0 : 1 + (i - 1) * around + (k % around); };
+  for (int k = 0; k < around; ++k) dome.triangles.push_back({at(0, 0), at(1, k), at(1, k + 1)});
+  for (int i = 1; i < rings; ++i)
+    for (int k = 0; k < around; ++k) {
+      dome.triangles.push_back({at(i, k), at(i + 1, k), at(i + 1, k + 1)});
+      dome.triangles.push_back({at(i, k), at(i + 1, k + 1), at(i, k + 1)});
+    }
+  TriMesh inward = dome;
+  for (Tri& t : inward.triangles) std::swap(t[1], t[2]);
+  const fs::path out_file = dir_ / "out.obj", in_file = dir_ / "in.obj", ring_file = dir_ / "ring.off";
+  write_mesh(dome, out_file);
+  write_mesh(inward, in_file);
+  write_mesh(torus({0, 0, 1.2}, {1, 0, 0}, {0, 1, 0}, 0.1, 0.02, 24, 8), ring_file);
+  const CliRun outward_run = run({ring_file.string(), "--base", out_file.string(), "--json"});
+  const CliRun inward_run = run({ring_file.string(), "--base", in_file.string(), "--json"});
+  ASSERT_EQ(outward_run.code, 0) << outward_run.err;
+  ASSERT_EQ(inward_run.code, 0) << inward_run.err;
+  const nlohmann::json a = nlohmann::json::parse(outward_run.out), b = nlohmann::json::parse(inward_run.out);
+  EXPECT_GT(a.at("height_min").get<double>(), 0.0);  // above the dome, outside it
+  EXPECT_NEAR(b.at("height_min").get<double>(), a.at("height_min").get<double>(), 1e-9);
+  EXPECT_NEAR(b.at("height_max").get<double>(), a.at("height_max").get<double>(), 1e-9);
 }
 
 bool one_line_naming(const std::string& err, const std::string& name) {
