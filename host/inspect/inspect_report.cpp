@@ -143,14 +143,14 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
   timer.lap("element sizes");
 
   if (options.rings) {
-    const RingLinks links = ring_links(mesh, topology.face_element, topology.elements);
+    const std::vector<RingCentreLine> lines = ring_centre_lines(mesh, topology.face_element, topology.elements);
+    const RingLinks links = ring_links(lines);
     report.rings = ring_report(links);
     if (!options.near_points.empty()) {
       InspectReport::Rings::Near near;
       near.points = static_cast<int32_t>(options.near_points.size());
       near.radius = options.near_radius * links.median_radius;
-      near.rings = rings_near(links, ring_centre_lines(mesh, topology.face_element, topology.elements),
-                              options.near_points, near.radius);
+      near.rings = rings_near(links, lines, options.near_points, near.radius);
       report.rings->near = near;
     }
     timer.lap("rings");
@@ -180,7 +180,8 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
       }
     }
     if (report.rings) {
-      const RingLinks swatch_rings = ring_links(swatch, swatch_elements, count);
+      const std::vector<RingCentreLine> swatch_lines = ring_centre_lines(swatch, swatch_elements, count);
+      const RingLinks swatch_rings = ring_links(swatch_lines);
       if (swatch_rings.median_radius > 0.0)
         report.rings->radius_ratio = report.rings->median_radius / swatch_rings.median_radius;
       if (options.scale && base_input && swatch_rings.median_radius > 0.0) {
@@ -190,7 +191,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
           report.rings->asked_radius = swatch_rings.median_radius * *options.scale *
                                        glm::length(bounding_box(base_input->positions).extent()) / longer;
       }
-      const std::optional<double> density = ring_density(ring_centre_lines(swatch, swatch_elements, count));
+      const std::optional<double> density = ring_density(swatch_lines);
       if (density && options.plane) report.rings->expected_rings = *density * plane_area(mesh, options.plane_options);
       // Over a base the swatch was scaled: its density follows from the ring sizes.
       if (density && base_input && report.rings->radius_ratio)

@@ -137,8 +137,12 @@ RingsNear rings_near(const RingLinks& links, const std::vector<RingCentreLine>& 
 }
 
 RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements) {
+  return ring_links(ring_centre_lines(mesh, face_element, elements));
+}
+
+RingLinks ring_links(const std::vector<RingCentreLine>& lines) {
   RingLinks result;
-  const std::vector<RingCentreLine> lines = ring_centre_lines(mesh, face_element, elements);
+  const auto elements = static_cast<int32_t>(lines.size());
   result.rings = elements;
   result.links_per_ring.assign(static_cast<size_t>(elements), 0);
   if (elements == 0) return result;

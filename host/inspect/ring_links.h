@@ -64,5 +64,7 @@ RingsNear rings_near(const RingLinks& links, const std::vector<RingCentreLine>& 
 //! Rings whose centre lines could meet (centres closer than the sum of their radii plus a
 //! margin) are tested by linking_number. \pre as ring_centre_lines.
 RingLinks ring_links(const TriMesh& mesh, const std::vector<int32_t>& face_element, int32_t elements);
+//! The same from the rings' centre lines (ring_centre_lines), one per element.
+RingLinks ring_links(const std::vector<RingCentreLine>& lines);
 
 }  // namespace meshquilt
