@@ -117,6 +117,7 @@ SynthRequest synth_request(const SynthArgs& args, const SynthSettings& settings)
   request.fill_margin = args.fill_margin;
   request.symmetry = args.symmetry;
   request.size_hold = args.size_hold;
+  request.cone_spread = args.cone_spread;
   request.shell_height = args.shell_height;
   request.embed = args.embed;
   request.shared_layout = args.shared_layout;

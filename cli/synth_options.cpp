@@ -32,6 +32,10 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
                   "(0.1: conformal, round rings whose size follows the base's curvature; 3-10: even sizes, "
                   "stretched rings)")
       ->capture_default_str();
+  cmd->add_option("--cone-spread", args.cone_spread,
+                  "with --base and no --field, over a closed genus-0 base: pairs of cones are added to the layout "
+                  "until its scale spreads at most this much (p90 / p10 by area; 1: as little as they can)")
+      ->capture_default_str();
   cmd->add_option("--shell-height", args.shell_height,
                   "with --base: layer height in base units (default: the swatch's thickness at --scale)");
   cmd->add_option("--write-field", args.write_field, "with --base: write the field used as OBJ line segments");

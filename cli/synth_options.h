@@ -31,6 +31,7 @@ struct SynthArgs {
   bool shared_layout = true;        //!< patches are windows of one layout of the base
   int symmetry = 0;                 //!< n of the layout's field; 0: the swatch's symmetry
   double size_hold = 0.1;           //!< SynthRequest::size_hold
+  double cone_spread = 1.5625;      //!< SynthRequest::cone_spread
   double shell_height = 0.0;        //!< layer height in base units; 0: the swatch's thickness at scale
   std::string write_field;          //!< write the field used as OBJ line segments
   std::string preview;              //!< write a PNG preview of the result

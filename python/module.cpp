@@ -307,7 +307,7 @@ PYBIND11_MODULE(_meshquilt, m) {
          int cells, bool cleanup, double fill_margin, int symmetry, double shell_height, const std::string& embed,
          bool per_patch_charts, bool minimize_distortion, bool keep_texture,
          std::optional<py::function> progress, CancelToken* cancel, std::optional<Array3d> field_points,
-         std::optional<Array3d> field_directions, double size_hold) {
+         std::optional<Array3d> field_directions, double size_hold, double cone_spread) {
         SynthRequest request;
         if (swatch_vertices) {
           request.swatch = mesh_from(*swatch_vertices, *swatch_faces, "swatch");
@@ -322,6 +322,7 @@ PYBIND11_MODULE(_meshquilt, m) {
         request.fill_margin = fill_margin;
         request.symmetry = symmetry;
         request.size_hold = size_hold;
+        request.cone_spread = cone_spread;
         request.shell_height = shell_height;
         request.embed = embed;
         request.shared_layout = !per_patch_charts;
@@ -383,7 +384,7 @@ PYBIND11_MODULE(_meshquilt, m) {
       py::arg("shell_height") = 0.0, py::arg("embed") = "shell", py::arg("per_patch_charts") = false,
       py::arg("minimize_distortion") = true, py::arg("keep_texture") = false,
       py::arg("progress") = py::none(), py::arg("cancel") = nullptr, py::arg("field_points") = py::none(),
-      py::arg("field_directions") = py::none(), py::arg("size_hold") = 0.1);
+      py::arg("field_directions") = py::none(), py::arg("size_hold") = 0.1, py::arg("cone_spread") = 1.5625);
 
   m.def(
       "guidance",

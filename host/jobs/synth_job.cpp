@@ -80,6 +80,7 @@ void add_curved_stats(const SynthRequest& request, const SurfaceQuiltStats& stat
   out["cone_points"] = nlohmann::json::array();
   for (const Vec3& p : stats.cone_points) out["cone_points"].push_back({p.x, p.y, p.z});
   out["cone_indices"] = stats.cone_indices;
+  if (stats.layout_scale_spread > 0.0) out["layout_scale_spread"] = stats.layout_scale_spread;
   out["outside_vertices"] = stats.outside_vertices;
   out["shell_height"] = stats.shell_height;
   out["shell_height_share"] = stats.diagonal > 0.0 ? stats.shell_height / stats.diagonal : 0.0;
@@ -112,6 +113,8 @@ void check_synth_request(const SynthRequest& r) {
   if (!curved && !r.field.empty()) fail("{field} needs {base}");
   if (r.embed != "shell" && r.embed != "normal") fail("{embed}: expected shell or normal, got '" + r.embed + "'");
   if (r.cells < 4 || r.cells > 256) fail("{cells}: expected 4..256, got " + std::to_string(r.cells));
+  if (!(r.cone_spread >= 1.0 && r.cone_spread <= 1000.0))
+    fail("{cone_spread}: expected a number in [1, 1000], got " + std::to_string(r.cone_spread));
   if (!(r.size_hold > 0.0 && r.size_hold <= 1000.0))
     fail("{size_hold}: expected a number in (0, 1000], got " + std::to_string(r.size_hold));
   if (!(r.fill_margin >= 0.0) || !std::isfinite(r.fill_margin))
@@ -161,6 +164,7 @@ SynthOutcome run_synth(const SynthRequest& request, const SynthInputs& inputs, e
     options.shared_layout = request.shared_layout;
     options.symmetry = request.symmetry;
     options.size_hold = request.size_hold;
+    options.cone_spread = request.cone_spread;
     const BaseSurface surface(inputs.base);
     const GuidanceField field = interpolate_field(surface, request.field);
     if (hooks.field_ready) hooks.field_ready(surface, field);

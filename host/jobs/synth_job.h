@@ -40,6 +40,7 @@ struct SynthRequest {
   double fill_margin = 0.5;            //!< QuiltOptions::fill_margin
   int symmetry = 0;                    //!< n of the layout's field; 0: the swatch's own
   double size_hold = 0.1;              //!< SurfaceQuiltOptions::size_hold
+  double cone_spread = 1.5625;         //!< SurfaceQuiltOptions::cone_spread
   double shell_height = 0.0;           //!< layer height in base units; 0: the swatch's at scale
   std::string embed = "shell";         //!< shell or normal
   bool shared_layout = true;           //!< patches are windows of one layout of the base

@@ -1,5 +1,7 @@
 #include "surface/base_layout.h"
 
+#include <algorithm>
+#include <glm/geometric.hpp>
 #include <unordered_map>
 
 #include "mesh/topology.h"
@@ -10,6 +12,11 @@ namespace {
 
 // Bases below this many faces are split until they reach it (at most three times).
 constexpr size_t kLayoutFaces = 1000;
+// Opposite cones added to the cone metric: at most this many pairs, each this many periods
+// from every other cone; its spread within this factor of the smoothest field's counts as even.
+constexpr int kMaxConePairs = 32;
+constexpr double kConeSeparation = 4.0;
+constexpr double kConeSpreadTie = 1.05;
 
 }  // namespace
 
@@ -39,7 +46,7 @@ TriMesh split_faces(const TriMesh& mesh, int levels) {
 
 BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target,
                        const std::vector<double>& weight, bool drawn,
-                       const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold)
+                       const std::optional<std::array<glm::dvec2, 2>>& lattice, double size_hold, double cone_spread)
     : base_(base), lattice_(lattice), size_hold_(size_hold) {
   size_t faces = base.mesh.num_faces();
   while (faces > 0 && faces < kLayoutFaces && levels_ < 3) {
@@ -56,10 +63,30 @@ BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<
     fine_weight[f] = weight[f / parts];
   }
   field_ = smoothest_direction_field(*fine_, symmetry, fine_target, fine_weight);
-  // Where no one drew a field, the cones that flatten the base more evenly.
+  // Where no one drew a field, the cones that flatten the base more evenly, pairs of them kept
+  // apart by a few periods so the pattern closes round each. Area spreads within a few percent
+  // do not tell the sizes of placed rings apart, and apart cones close the pattern better: a tie
+  // goes to the cone metric, unless it has fewer cones, whose sizes run further past p10 and p90.
   if (!drawn) {
-    std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0]);
-    if (placed && *field_scale_spread(*fine_, *placed) < *field_scale_spread(*fine_, field_)) field_ = std::move(*placed);
+    ConeBound bound{cone_spread, 0.0, lattice_ ? kMaxConePairs : 0};
+    if (lattice_)
+      bound.separation = kConeSeparation * std::max(glm::length((*lattice_)[0]), glm::length((*lattice_)[1]));
+    std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0], bound);
+    if (placed) {
+      const double placed_spread = *field_scale_spread(*fine_, *placed);
+      const double smoothest_spread = *field_scale_spread(*fine_, field_);
+      const auto count = [&](const DirectionField& field) {
+        const std::vector<int> index = field_indices(*fine_, field);
+        return std::count_if(index.begin(), index.end(), [](int k) { return k != 0; });
+      };
+      const double tie = count(*placed) >= count(field_) ? kConeSpreadTie : 1.0;
+      if (placed_spread < tie * smoothest_spread) {
+        field_ = std::move(*placed);
+        scale_spread_ = placed_spread;
+      } else {
+        scale_spread_ = smoothest_spread;
+      }
+    }
   }
   layout_ = seamless_layout(*fine_, field_, lattice_, size_hold_);
 }

@@ -1,7 +1,8 @@
 #pragma once
 //! The shared layout of a base as the surface driver uses it: the smoothest n-direction field
 //! holding the guidance field's given directions (where none were drawn on a closed genus-0
-//! base, the cone metric's field when its scale spreads less: cone_metric_field.h), and the
+//! base, the cone metric's field, with pairs of cones where its scale runs away, unless it
+//! spreads more: cone_metric_field.h), and the
 //! seamless layout that follows it
 //! (seamless_layout.h), computed over the base split 1-to-4 where it is coarse. A field's cones
 //! need room: on the 320 faces of `data/sphere.off` the smoothest line field has two index-1
@@ -11,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "surface/cone_metric_field.h"
 #include "surface/seamless_layout.h"
 
 namespace meshquilt {
@@ -19,11 +21,11 @@ class BaseLayout {
  public:
   //! target, weight: per base face, as smoothest_direction_field takes them; drawn: the user
   //! gave directions, which the field must follow; lattice, size_hold: as seamless_layout
-  //! takes them.
+  //! takes them; cone_spread: the bound on the cone metric's scale spread (ConeBound::spread).
   //! \throw SolverError when a solve fails.
   BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight,
              bool drawn = false, const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt,
-             double size_hold = kDefaultSizeHold);
+             double size_hold = kDefaultSizeHold, double cone_spread = kDefaultConeSpread);
   //! Lays the same field out again with elements element_scale times the size (seamless_layout).
   void resize(double element_scale);
   BaseLayout(const BaseLayout&) = delete;
@@ -39,6 +41,9 @@ class BaseLayout {
   Vec3 axis(int32_t base_face) const { return layout_.axis[first_part(base_face)]; }
   int symmetry() const { return layout_.symmetry; }
   int cones() const { return static_cast<int>(layout_.cones.size()); }
+  //! scale_spread of the flat metric with the field's cones; 0 where not known (a drawn field, a
+  //! base that is not one closed sphere).
+  double scale_spread() const { return scale_spread_; }
   //! Where the cones are: a base face holding each and its point in space.
   std::vector<std::pair<int32_t, Vec3>> cone_points() const;
   int levels() const { return levels_; }           //!< times the base was split 1-to-4
@@ -54,6 +59,7 @@ class BaseLayout {
   DirectionField field_;
   std::optional<std::array<glm::dvec2, 2>> lattice_;
   double size_hold_;
+  double scale_spread_ = 0.0;
   SeamlessLayout layout_;
 };
 

@@ -122,8 +122,8 @@ std::optional<double> field_scale_spread(const BaseSurface& base, const Directio
   return scale_spread(base, cone_metric_scale(base, curvature));
 }
 
-std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry,
-                                                const Vec3& root_direction) {
+std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction,
+                                                const ConeBound& bound) {
   if (!closed_sphere(base)) return std::nullopt;
   const TriMesh& mesh = base.mesh;
   const size_t vertices = mesh.num_vertices();
@@ -132,23 +132,32 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
     for (int32_t v : mesh.triangles[f]) vertex_area[v] += base.face_areas[f] / 3.0;
   const double deficit = 2.0 * kPi / symmetry;  // of one cone of index 1 / n
   const int count = 2 * symmetry;               // their deficits sum to 2 pi x 2
+  std::vector<int32_t> negative;  // cones of index -1 / n
   // The curvature asked for: the cones', and what is left spread by area.
   const auto target = [&](const std::vector<int32_t>& cones) {
-    const double left = 4.0 * kPi - deficit * static_cast<double>(cones.size());
+    const double left =
+        4.0 * kPi - deficit * (static_cast<double>(cones.size()) - static_cast<double>(negative.size()));
     std::vector<double> k(vertices);
     for (size_t v = 0; v < vertices; ++v) k[v] = left * vertex_area[v] / base.area;
     for (int32_t c : cones) k[c] += deficit;
+    for (int32_t c : negative) k[c] -= deficit;
     return k;
   };
+  // The vertex of lowest phi, at least `bound.separation` from every cone taken (or, where none
+  // is, the lowest not taken).
   const auto lowest = [&](const std::vector<double>& phi, const std::vector<int32_t>& taken) {
-    int32_t best = -1;
+    int32_t best = -1, nearer = -1;
     for (size_t v = 0; v < vertices; ++v) {
       if (base.vertex_faces[v].empty() ||
           std::find(taken.begin(), taken.end(), static_cast<int32_t>(v)) != taken.end())
         continue;
-      if (best < 0 || phi[v] < phi[best]) best = static_cast<int32_t>(v);
+      const bool apart = std::all_of(taken.begin(), taken.end(), [&](int32_t c) {
+        return glm::length(mesh.positions[c] - mesh.positions[v]) >= bound.separation;
+      });
+      int32_t& slot = apart ? best : nearer;
+      if (slot < 0 || phi[v] < phi[slot]) slot = static_cast<int32_t>(v);
     }
-    return best;
+    return best >= 0 ? best : nearer;
   };
   const ConeMetric metric(base);
   std::vector<int32_t> cones;
@@ -188,6 +197,44 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
       phi = std::move(tried_phi);
       spread = tried_spread;
     }
+
+  // Pairs of opposite cones where the scale runs away, while the spread is above the bound: a
+  // negative cone where lengths in the metric are longest (elements smallest), a positive one
+  // where they are shortest, each apart from every cone so far.
+  const auto apart = [&](int32_t v) {
+    const Vec3& p = mesh.positions[v];
+    for (const std::vector<int32_t>* set : {&cones, &negative})
+      for (int32_t c : *set)
+        if (glm::length(mesh.positions[c] - p) < bound.separation) return false;
+    return !base.vertex_faces[v].empty();
+  };
+  // The greedy pairs do not narrow the spread step by step: the placement kept is the first
+  // within the bound, or else the narrowest seen.
+  std::vector<int32_t> best_cones = cones, best_negative = negative;
+  double best_spread = spread;
+  for (int pair = 0; pair < bound.max_pairs && best_spread > bound.spread; ++pair) {
+    int32_t high = -1;
+    for (size_t v = 0; v < vertices; ++v)
+      if (apart(static_cast<int32_t>(v)) && (high < 0 || phi[v] > phi[high])) high = static_cast<int32_t>(v);
+    if (high < 0) break;
+    negative.push_back(high);
+    const std::vector<double> between = metric.scale(target(cones));
+    int32_t low = -1;
+    for (size_t v = 0; v < vertices; ++v)
+      if (apart(static_cast<int32_t>(v)) && (low < 0 || between[v] < between[low])) low = static_cast<int32_t>(v);
+    if (low < 0) break;
+    cones.push_back(low);
+    phi = metric.scale(target(cones));
+    spread = scale_spread(base, phi);
+    if (spread < kRelocationGain * best_spread) {
+      best_cones = cones;
+      best_negative = negative;
+      best_spread = spread;
+    }
+  }
+  cones = std::move(best_cones);
+  negative = std::move(best_negative);
+  phi = metric.scale(target(cones));
 
   // Parallel transport in the scaled metric: the surface's own across each edge, turned by the
   // metric's rotation, minus the cotan-weighted change of phi along the edge.

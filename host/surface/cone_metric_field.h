@@ -26,13 +26,28 @@ double scale_spread(const BaseSurface& base, const std::vector<double>& phi);
 //! std::nullopt where the base is not one closed component of genus 0.
 std::optional<double> field_scale_spread(const BaseSurface& base, const DirectionField& field);
 
+//! The default bound on the layout's scale spread: #65's element sizes, p90 / p10 = 1.25 / 0.8.
+inline constexpr double kDefaultConeSpread = 1.5625;
+
+//! How far the cone metric may scale lengths, and what more cones may cost.
+struct ConeBound {
+  double spread = kDefaultConeSpread;  //!< pairs of opposite cones are added while scale_spread exceeds this
+  double separation = 0.0;             //!< no cone nearer another than this, in base units
+  int max_pairs = 0;                   //!< 0: the 2n cones alone
+};
+
 //! The field of symmetry n parallel in the cone metric, its 2n cones of index 1 / n placed
 //! greedily, each at the lowest scale left by the cones so far with the rest of the curvature
 //! spread evenly, then moved two at a time while that narrows the scale's spread (on a sphere:
-//! from two opposite pairs a quarter turn apart to about a tetrahedron's corners), turned so
-//! that `root_direction` holds on face 0.
+//! from two opposite pairs a quarter turn apart to about a tetrahedron's corners); then, while
+//! the spread exceeds `bound.spread`, up to `bound.max_pairs` pairs of cones of index -1 / n
+//! and 1 / n where lengths in the metric are longest and shortest (Ben-Chen et al. 2008's
+//! greedy choice, in whole cones); every cone `bound.separation` from every other; the first
+//! placement within the bound is kept, or else the one that spreads least. Turned so that
+//! `root_direction` holds on face 0.
 //! std::nullopt where the base is not one closed component of genus 0.
 //! \throw SolverError when a solve fails.
-std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction);
+std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction,
+                                                const ConeBound& bound = {});
 
 }  // namespace meshquilt

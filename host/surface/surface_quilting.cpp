@@ -149,13 +149,14 @@ class SurfaceDriver {
     std::optional<std::array<glm::dvec2, 2>> periods;
     if (lattice_) periods = std::array<glm::dvec2, 2>{unit_ * lattice_->basis[0], unit_ * lattice_->basis[1]};
     auto layout = std::make_unique<BaseLayout>(base_, n, targets.target, targets.weight, !field_.held_vertices.empty(),
-                                               periods, options_.size_hold);
+                                               periods, options_.size_hold, options_.cone_spread);
     stats_.on_lattice = layout->layout().on_lattice;
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();
     stats_.cone_points.clear();
     for (const auto& [face, point] : layout->cone_points()) stats_.cone_points.push_back(point);
     stats_.cone_indices = layout->layout().cone_indices;
+    stats_.layout_scale_spread = layout->scale_spread();
     return layout;
   }
 

@@ -12,6 +12,7 @@
 #include "inspect/copy_sizes.h"
 #include "mesh/tri_mesh.h"
 #include "surface/guidance_field.h"
+#include "surface/cone_metric_field.h"
 #include "surface/seamless_layout.h"
 #include "surface/surface_embedding.h"
 #include "quilt/quilt_options.h"
@@ -41,6 +42,9 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! How strongly that layout holds elements to one size against keeping them their shape
   //! (seamless_layout.h): 0.1 conformal, 3-10 even sizes with stretched elements.
   double size_hold = kDefaultSizeHold;
+  //! The bound on that layout's scale spread (p90 / p10 by area) that pairs of cones are added
+  //! for, where no field was drawn on a closed genus-0 base (cone_metric_field.h).
+  double cone_spread = kDefaultConeSpread;
   //! Where the pattern filled straight from the layout covers most of the base and its median
   //! element is off the size asked, lays the layout out again to bring it to that size.
   bool median_from_fill = true;
@@ -63,6 +67,7 @@ struct SurfaceQuiltStats : QuiltStats {
   int cones = 0;               //!< singular vertices of the layout's field
   std::vector<Vec3> cone_points;  //!< where they are on the base
   std::vector<int> cone_indices;  //!< the field's index at each, in units of 1 / field_symmetry
+  double layout_scale_spread = 0.0;  //!< BaseLayout::scale_spread
   int outside_vertices = 0;    //!< vertices placed outside their patch, put on its nearest face
   double shell_height = 0.0;   //!< base units
   double diagonal = 0.0;       //!< base bounding-box diagonal

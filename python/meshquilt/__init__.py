@@ -104,7 +104,8 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
           shell_height: float = 0.0, embed: str = "shell", per_patch_charts: bool = False,
           minimize_distortion: bool = True, keep_texture: bool = False,
           progress: Optional[Callable[[float, float], None]] = None, cancel: Optional[CancelToken] = None,
-          field: Optional[Field] = None, size_hold: float = 0.1) -> Result:
+          field: Optional[Field] = None, size_hold: float = 0.1,
+          cone_spread: float = 1.5625) -> Result:
     """Grows the swatch (default: the built-in chain mail) over a plane of `plane` = (width, height)
     swatch extents, or over `base` at `scale` (the swatch's longer side over the base's bounding-box
     diagonal), as `meshquilt synth` does with the same options: the same seed gives the same
@@ -113,7 +114,7 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
     for `embed` over the base posed or edited. `field` = (points, directions), two (K, 3) arrays:
     directions drawn over the base, each held at the base vertex nearest its point (synth's
     --field file with `point` entries); see `guidance`. fill_margin is synth's --fill-margin (0:
-    every element through the patch step), size_hold synth's --size-hold. `progress(share, seconds_left)` is called once a
+    every element through the patch step), size_hold synth's --size-hold, cone_spread its --cone-spread. `progress(share, seconds_left)` is called once a
     repeating pattern is filled and after each patch (seconds_left is -1 until something is
     covered); raising in it cancels the job. The engine runs without the GIL. Swatch and base are
     repaired as the command line repairs files (winding, duplicates, T-junctions...);
@@ -128,7 +129,8 @@ def synth(swatch: Optional[MeshLike] = None, *, plane: Optional[Tuple[float, flo
     fp, fd = _field_arrays(field)
     d = _meshquilt.synth(sv, sf, None if plane is None else (float(plane[0]), float(plane[1])), bv, bf, scale, seed,
                          backend, cells, cleanup, fill_margin, symmetry, shell_height, embed, per_patch_charts,
-                         minimize_distortion, keep_texture, progress, cancel, fp, fd, size_hold=float(size_hold))
+                         minimize_distortion, keep_texture, progress, cancel, fp, fd, size_hold=float(size_hold),
+                         cone_spread=float(cone_spread))
     return _mesh(d, Result, stats=d["stats"], texture=d.get("texture"))
 
 

@@ -112,6 +112,8 @@ TEST_F(SynthBadInput, BadSizeHold) {
   expect_failure("--plane 2x2 --size-hold 0", 6, "--size-hold");
   expect_failure("--plane 2x2 --size-hold -1", 6, "--size-hold");
   expect_failure("--plane 2x2 --size-hold 2000", 6, "--size-hold");
+  expect_failure("--plane 2x2 --cone-spread 0.5", 6, "--cone-spread");
+  expect_failure("--plane 2x2 --cone-spread 2000", 6, "--cone-spread");
 }
 
 TEST(SynthBadOutput, UnknownOutputFormat) {

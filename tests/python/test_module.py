@@ -332,6 +332,8 @@ def test_guidance_holds_a_drawn_direction_and_is_tangent():
         meshquilt.guidance((vertices, faces), field=([vertices[top]], [[0.0, 0.0, 0.0]]))
     with pytest.raises(meshquilt.Error, match="a field needs base"):
         meshquilt.synth(plane=(1, 1), field=([vertices[top]], [[1.0, 0.0, 0.0]]))
+    with pytest.raises(meshquilt.Error, match="cone.spread"):
+        meshquilt.synth(base=(vertices, faces), cone_spread=0.5)
 
 
 def test_animate_equals_the_command_line_frame_for_frame():

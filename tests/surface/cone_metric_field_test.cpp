@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -116,6 +117,76 @@ TEST(ConeMetricField, SpreadsScaleLessThanTheSmoothestFieldPulledToAnAxis) {
   const double paired_spread = *field_scale_spread(base, paired), placed_spread = *field_scale_spread(base, *placed);
   std::printf("scale spread p90 / p10: smoothest %.3f, cones placed %.3f\n", paired_spread, placed_spread);
   EXPECT_LT(placed_spread, 0.85 * paired_spread);
+}
+
+// An icosphere with eight Gaussian bumps, as limbs or ears: four cones leave the tips of the
+// others scaled far from the rest.
+TriMesh bumpy_sphere() {
+  TriMesh m = test::icosphere(4);
+  // Eight bumps, near a cube's corners, more than four cones can round off.
+  std::vector<Vec3> bumps;
+  for (int i = 0; i < 8; ++i)
+    bumps.push_back(glm::normalize(Vec3(i & 1 ? 1.0 : -1.0, i & 2 ? 1.1 : -0.9, i & 4 ? 1.2 : -0.8)));
+  for (Vec3& p : m.positions) {
+    double r = 1.0;
+    for (const Vec3& d : bumps) {
+      const double angle = std::acos(std::clamp(glm::dot(glm::normalize(p), d), -1.0, 1.0));
+      r += 0.8 * std::exp(-(angle / 0.35) * (angle / 0.35));
+    }
+    p *= r;
+  }
+  return m;
+}
+
+struct ConeSet {
+  std::vector<Vec3> positive, negative;
+};
+
+ConeSet cones_of(const TriMesh& m, const BaseSurface& base, const DirectionField& field) {
+  ConeSet set;
+  const std::vector<int> index = field_indices(base, field);
+  for (size_t v = 0; v < index.size(); ++v) {
+    EXPECT_TRUE(index[v] >= -1 && index[v] <= 1) << "vertex " << v << ": index " << index[v];
+    if (index[v] > 0) set.positive.push_back(m.positions[v]);
+    if (index[v] < 0) set.negative.push_back(m.positions[v]);
+  }
+  return set;
+}
+
+TEST(ConeMetricField, PairsOfConesNarrowTheScaleWhereFourLeaveItSpread) {
+  const TriMesh m = bumpy_sphere();
+  const BaseSurface base(m);
+  const auto four = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0));
+  ASSERT_TRUE(four);
+  const ConeSet alone = cones_of(m, base, *four);
+  EXPECT_EQ(alone.positive.size(), 4u);
+  EXPECT_TRUE(alone.negative.empty());
+  const double separation = 0.5;
+  const auto paired = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0), ConeBound{1.0, separation, 16});
+  ASSERT_TRUE(paired);
+  const ConeSet with = cones_of(m, base, *paired);
+  const double spread_alone = *field_scale_spread(base, *four), spread_with = *field_scale_spread(base, *paired);
+  std::printf("bumpy sphere: 4 cones spread %.3f; %zu + %zu cones spread %.3f\n", spread_alone, with.positive.size(),
+              with.negative.size(), spread_with);
+  // Poincare-Hopf: every pair adds one cone of each sign.
+  EXPECT_GT(with.negative.size(), 0u);
+  EXPECT_EQ(with.positive.size(), 4u + with.negative.size());
+  EXPECT_LT(spread_with, 0.8 * spread_alone);
+  // Every cone keeps its distance from every other.
+  std::vector<Vec3> all = with.positive;
+  all.insert(all.end(), with.negative.begin(), with.negative.end());
+  for (size_t i = 0; i < all.size(); ++i)
+    for (size_t j = i + 1; j < all.size(); ++j) EXPECT_GE(glm::length(all[i] - all[j]), separation * (1.0 - 1e-9));
+  // A bound the four cones already meet adds none.
+  const auto bounded = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0), ConeBound{spread_alone * 1.01, separation, 16});
+  ASSERT_TRUE(bounded);
+  EXPECT_TRUE(cones_of(m, base, *bounded).negative.empty());
+  // A bound between stops at the first placement within it: no wider than asked, fewer cones.
+  const double between = 0.5 * (spread_alone + spread_with);
+  const auto fewer = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0), ConeBound{between, separation, 16});
+  ASSERT_TRUE(fewer);
+  EXPECT_LE(*field_scale_spread(base, *fewer), between);
+  EXPECT_LE(cones_of(m, base, *fewer).negative.size(), with.negative.size());
 }
 
 TEST(ConeMetricField, RefusesBasesThatAreNotOneClosedSphere) {

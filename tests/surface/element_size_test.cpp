@@ -3,7 +3,8 @@
 // the layout), near the radius the scale asks, the stats' own measure of whole copies agreeing,
 // the mail one linked piece, and the cones the stats list on the base with indices that sum as
 // the base's topology asks. The layout's own median left these bases' median ring 7-8% small;
-// laid out again by the filled rings' median it is within 5% (decision 0058).
+// laid out again by the filled rings' median it is within 5% (decision 0058); the cone metric's
+// pairs of cones keep p10 and p90 near #65's bars (0060).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,8 +61,13 @@ TEST_P(ElementSize, TheMedianRingIsTheSizeAsked) {
               size.at("p10").get<double>(), size.at("median").get<double>(), size.at("p90").get<double>(),
               rings.at("linked_to_3_share").get<double>(), rings.at("largest_piece_share").get<double>());
   EXPECT_NEAR(over.at("median").get<double>(), 1.0, 0.05);
+  // Pairs of cones where the layout's scale ran away (decision 0060): without them p90 was 1.48
+  // on the bunny and 1.46 on spot, p10 0.50 on the bust.
+  EXPECT_LE(over.at("p90").get<double>(), 1.30);
+  EXPECT_GE(over.at("p10").get<double>(), 0.70);
   EXPECT_NEAR(size.at("median").get<double>(), over.at("median").get<double>(), 0.03);
-  EXPECT_GT(job.stats.at("size_correction").get<double>(), 1.02);
+  // The bust's layout alone leaves the median ring small; it is laid out again by the fill's.
+  if (std::string(GetParam()) == "decimated-max.obj") EXPECT_GT(job.stats.at("size_correction").get<double>(), 1.02);
   EXPECT_GE(rings.at("linked_to_3_share").get<double>(), 0.93);
   EXPECT_GE(rings.at("largest_piece_share").get<double>(), 0.95);
 
