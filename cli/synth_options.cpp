@@ -33,7 +33,7 @@ void add_synth_options(CLI::App* cmd, SynthArgs& args) {
                   "stretched rings)")
       ->capture_default_str();
   cmd->add_option("--cone-spread", args.cone_spread,
-                  "with --base and no --field, over a closed genus-0 base: pairs of cones are added to the layout "
+                  "with --base and no --field, over a closed genus-0 base or a disc: cones are added to the layout "
                   "until its scale spreads at most this much (p90 / p10 by area; 1: as little as they can)")
       ->capture_default_str();
   cmd->add_option("--shell-height", args.shell_height,

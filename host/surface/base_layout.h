@@ -1,7 +1,7 @@
 #pragma once
 //! The shared layout of a base as the surface driver uses it: the smoothest n-direction field
 //! holding the guidance field's given directions (where none were drawn on a closed genus-0
-//! base, the cone metric's field, with pairs of cones where its scale runs away, unless it
+//! base or a disc, the cone metric's field, with pairs of cones where its scale runs away, unless it
 //! spreads more: cone_metric_field.h), and the
 //! seamless layout that follows it
 //! (seamless_layout.h), computed over the base split 1-to-4 where it is coarse. A field's cones
@@ -42,7 +42,7 @@ class BaseLayout {
   int symmetry() const { return layout_.symmetry; }
   int cones() const { return static_cast<int>(layout_.cones.size()); }
   //! scale_spread of the flat metric with the field's cones; 0 where not known (a drawn field, a
-  //! base that is not one closed sphere).
+  //! base that is neither one closed sphere nor one disc).
   double scale_spread() const { return scale_spread_; }
   //! Where the cones are: a base face holding each and its point in space.
   std::vector<std::pair<int32_t, Vec3>> cone_points() const;

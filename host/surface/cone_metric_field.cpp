@@ -35,33 +35,53 @@ std::vector<double> angle_defects(const TriMesh& mesh) {
   return defect;
 }
 
-// One closed component of genus 0.
-bool closed_sphere(const BaseSurface& base) {
-  const SurfaceReport report = inspect_surface(base.mesh);
-  return report.closed_manifold() && report.components == 1 && report.euler == 2;
+// The bases the cone metric takes: one closed component of genus 0, or one disc, whose border
+// keeps the base's own lengths (phi = 0 there) and takes what curvature the cones leave.
+enum class MetricShape { kNone, kSphere, kDisc };
+
+MetricShape metric_shape(const BaseSurface& base) {
+  const SurfaceReport r = inspect_surface(base.mesh);
+  if (r.components != 1 || r.nonmanifold_edges != 0 || r.misoriented_edges != 0 || r.pinched_vertices != 0 ||
+      r.degenerate_faces != 0)
+    return MetricShape::kNone;
+  if (r.boundary_edges == 0 && r.euler == 2) return MetricShape::kSphere;
+  if (r.boundary_edges > 0 && r.euler == 1) return MetricShape::kDisc;
+  return MetricShape::kNone;
 }
 
-// The cotan Laplacian of a closed base, factored once for every curvature asked of it.
+std::vector<uint8_t> border_vertices(const BaseSurface& base) {
+  std::vector<uint8_t> border(base.mesh.num_vertices(), 0);
+  for (size_t f = 0; f < base.mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (base.face_across[f][k] < 0) border[base.mesh.triangles[f][k]] = border[base.mesh.triangles[f][(k + 1) % 3]] = 1;
+  return border;
+}
+
+// The cotan Laplacian of a closed base or a disc, factored once for every curvature asked of it.
 class ConeMetric {
  public:
-  explicit ConeMetric(const BaseSurface& base)
-      : defect_(angle_defects(base.mesh)), factor_(laplacian(base.mesh), "cone metric") {}
+  //! border: per vertex, 1 where phi is held at 0 (a disc's border); empty for a closed base.
+  ConeMetric(const BaseSurface& base, std::vector<uint8_t> border)
+      : defect_(angle_defects(base.mesh)), border_(std::move(border)),
+        factor_(laplacian(base.mesh, border_), "cone metric") {}
 
-  //! phi solving L phi = K_hat - K, mean 0.
+  //! phi solving L phi = K_hat - K: mean 0 over a closed base, 0 on a disc's border.
   std::vector<double> scale(const std::vector<double>& target_curvature) const {
     const auto n = static_cast<Eigen::Index>(defect_.size());
     Eigen::MatrixXd rhs(n, 1);
-    for (Eigen::Index v = 0; v < n; ++v) rhs(v, 0) = target_curvature[v] - defect_[v];
+    for (Eigen::Index v = 0; v < n; ++v)
+      rhs(v, 0) = !border_.empty() && border_[v] ? 0.0 : target_curvature[v] - defect_[v];
     const Eigen::MatrixXd phi = factor_.solve(rhs);
     std::vector<double> result(static_cast<size_t>(n));
     double mean = 0.0;
     for (Eigen::Index v = 0; v < n; ++v) mean += (result[v] = phi(v, 0)) / static_cast<double>(n);
-    for (double& x : result) x -= mean;
+    if (border_.empty())
+      for (double& x : result) x -= mean;
     return result;
   }
 
  private:
-  static Eigen::SparseMatrix<double> laplacian(const TriMesh& mesh) {
+  static Eigen::SparseMatrix<double> laplacian(const TriMesh& mesh, const std::vector<uint8_t>& border) {
     const auto n = static_cast<Eigen::Index>(mesh.num_vertices());
     std::vector<Eigen::Triplet<double>> triplets;
     double largest = 0.0;
@@ -69,13 +89,20 @@ class ConeMetric {
       for (int k = 0; k < 3; ++k) {
         const double w = half_cotangent(mesh, t, k);
         const int32_t i = t[(k + 1) % 3], j = t[(k + 2) % 3];
-        triplets.emplace_back(i, i, w);
-        triplets.emplace_back(j, j, w);
-        triplets.emplace_back(i, j, -w);
-        triplets.emplace_back(j, i, -w);
+        const bool held_i = !border.empty() && border[i], held_j = !border.empty() && border[j];
+        // A held vertex's phi is 0: its row is the identity and its column drops out.
+        if (!held_i) triplets.emplace_back(i, i, w);
+        if (!held_j) triplets.emplace_back(j, j, w);
+        if (!held_i && !held_j) {
+          triplets.emplace_back(i, j, -w);
+          triplets.emplace_back(j, i, -w);
+        }
         largest = std::max(largest, std::abs(w));
       }
-    // phi is defined up to a constant: a faint pull to 0 picks one, the mean taken out after.
+    for (Eigen::Index v = 0; v < n; ++v)
+      if (!border.empty() && border[v]) triplets.emplace_back(v, v, 1.0);
+    // Over a closed base phi is defined up to a constant: a faint pull to 0 picks one, the mean
+    // taken out after.
     for (Eigen::Index v = 0; v < n; ++v) triplets.emplace_back(v, v, 1e-9 * std::max(largest, 1e-300));
     Eigen::SparseMatrix<double> L(n, n);
     L.setFromTriplets(triplets.begin(), triplets.end());
@@ -83,13 +110,15 @@ class ConeMetric {
   }
 
   std::vector<double> defect_;
+  std::vector<uint8_t> border_;
   PositiveDefiniteFactor factor_;
 };
 
 }  // namespace
 
 std::vector<double> cone_metric_scale(const BaseSurface& base, const std::vector<double>& target_curvature) {
-  return ConeMetric(base).scale(target_curvature);
+  return ConeMetric(base, metric_shape(base) == MetricShape::kDisc ? border_vertices(base) : std::vector<uint8_t>{})
+      .scale(target_curvature);
 }
 
 double scale_spread(const BaseSurface& base, const std::vector<double>& phi) {
@@ -115,7 +144,7 @@ double scale_spread(const BaseSurface& base, const std::vector<double>& phi) {
 }
 
 std::optional<double> field_scale_spread(const BaseSurface& base, const DirectionField& field) {
-  if (!closed_sphere(base)) return std::nullopt;
+  if (metric_shape(base) == MetricShape::kNone) return std::nullopt;
   const std::vector<int> index = field_indices(base, field);
   std::vector<double> curvature(index.size());
   for (size_t v = 0; v < index.size(); ++v) curvature[v] = index[v] * 2.0 * kPi / field.symmetry;
@@ -124,19 +153,24 @@ std::optional<double> field_scale_spread(const BaseSurface& base, const Directio
 
 std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction,
                                                 const ConeBound& bound) {
-  if (!closed_sphere(base)) return std::nullopt;
+  const MetricShape shape = metric_shape(base);
+  if (shape == MetricShape::kNone) return std::nullopt;
+  const std::vector<uint8_t> border =
+      shape == MetricShape::kDisc ? border_vertices(base) : std::vector<uint8_t>(base.mesh.num_vertices(), 0);
   const TriMesh& mesh = base.mesh;
   const size_t vertices = mesh.num_vertices();
   std::vector<double> vertex_area(vertices, 0.0);
   for (size_t f = 0; f < mesh.num_faces(); ++f)
     for (int32_t v : mesh.triangles[f]) vertex_area[v] += base.face_areas[f] / 3.0;
   const double deficit = 2.0 * kPi / symmetry;  // of one cone of index 1 / n
-  const int count = 2 * symmetry;               // their deficits sum to 2 pi x 2
+  // On a sphere 2n cones whose deficits sum to 2 pi x 2; a disc's border takes what its cones leave.
+  const int count = shape == MetricShape::kSphere ? 2 * symmetry : 0;
   std::vector<int32_t> negative;  // cones of index -1 / n
-  // The curvature asked for: the cones', and what is left spread by area.
+  // The curvature asked for: the cones', and on a sphere what is left spread by area.
   const auto target = [&](const std::vector<int32_t>& cones) {
-    const double left =
-        4.0 * kPi - deficit * (static_cast<double>(cones.size()) - static_cast<double>(negative.size()));
+    const double left = shape == MetricShape::kDisc ? 0.0
+                                                    : 4.0 * kPi - deficit * (static_cast<double>(cones.size()) -
+                                                                             static_cast<double>(negative.size()));
     std::vector<double> k(vertices);
     for (size_t v = 0; v < vertices; ++v) k[v] = left * vertex_area[v] / base.area;
     for (int32_t c : cones) k[c] += deficit;
@@ -148,7 +182,7 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
   const auto lowest = [&](const std::vector<double>& phi, const std::vector<int32_t>& taken) {
     int32_t best = -1, nearer = -1;
     for (size_t v = 0; v < vertices; ++v) {
-      if (base.vertex_faces[v].empty() ||
+      if (base.vertex_faces[v].empty() || border[v] ||
           std::find(taken.begin(), taken.end(), static_cast<int32_t>(v)) != taken.end())
         continue;
       const bool apart = std::all_of(taken.begin(), taken.end(), [&](int32_t c) {
@@ -159,7 +193,7 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
     }
     return best >= 0 ? best : nearer;
   };
-  const ConeMetric metric(base);
+  const ConeMetric metric(base, shape == MetricShape::kDisc ? border : std::vector<uint8_t>{});
   std::vector<int32_t> cones;
   while (static_cast<int>(cones.size()) < count)
     cones.push_back(lowest(metric.scale(target(cones)), cones));
@@ -198,34 +232,56 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
       spread = tried_spread;
     }
 
-  // Pairs of opposite cones where the scale runs away, while the spread is above the bound: a
-  // negative cone where lengths in the metric are longest (elements smallest), a positive one
-  // where they are shortest, each apart from every cone so far.
+  // Cones where the scale runs away, while the spread is above the bound: on a sphere in pairs,
+  // a negative cone where lengths in the metric are longest (elements smallest), then a positive
+  // one where they are shortest; on a disc one at a time, of the sign that evens the scale more.
+  // Each apart from every cone so far.
   const auto apart = [&](int32_t v) {
     const Vec3& p = mesh.positions[v];
     for (const std::vector<int32_t>* set : {&cones, &negative})
       for (int32_t c : *set)
         if (glm::length(mesh.positions[c] - p) < bound.separation) return false;
-    return !base.vertex_faces[v].empty();
+    return !base.vertex_faces[v].empty() && !border[v];
   };
-  // The greedy pairs do not narrow the spread step by step: the placement kept is the first
+  const auto extreme = [&](const std::vector<double>& of, bool highest) {
+    int32_t best = -1;
+    for (size_t v = 0; v < vertices; ++v)
+      if (apart(static_cast<int32_t>(v)) && (best < 0 || (highest ? of[v] > of[best] : of[v] < of[best])))
+        best = static_cast<int32_t>(v);
+    return best;
+  };
+  // The greedy cones do not narrow the spread step by step: the placement kept is the first
   // within the bound, or else the narrowest seen.
   std::vector<int32_t> best_cones = cones, best_negative = negative;
   double best_spread = spread;
-  for (int pair = 0; pair < bound.max_pairs && best_spread > bound.spread; ++pair) {
-    int32_t high = -1;
-    for (size_t v = 0; v < vertices; ++v)
-      if (apart(static_cast<int32_t>(v)) && (high < 0 || phi[v] > phi[high])) high = static_cast<int32_t>(v);
+  const int steps = shape == MetricShape::kDisc ? 2 * bound.max_pairs : bound.max_pairs;
+  for (int step = 0; step < steps && best_spread > bound.spread; ++step) {
+    const int32_t high = extreme(phi, true);
     if (high < 0) break;
     negative.push_back(high);
-    const std::vector<double> between = metric.scale(target(cones));
-    int32_t low = -1;
-    for (size_t v = 0; v < vertices; ++v)
-      if (apart(static_cast<int32_t>(v)) && (low < 0 || between[v] < between[low])) low = static_cast<int32_t>(v);
-    if (low < 0) break;
-    cones.push_back(low);
-    phi = metric.scale(target(cones));
-    spread = scale_spread(base, phi);
+    if (shape == MetricShape::kDisc) {
+      std::vector<double> with_negative = metric.scale(target(cones));
+      const double negative_spread = scale_spread(base, with_negative);
+      negative.pop_back();
+      const int32_t low = extreme(phi, false);
+      if (low >= 0) {
+        cones.push_back(low);
+        phi = metric.scale(target(cones));
+        spread = scale_spread(base, phi);
+      }
+      if (low < 0 || negative_spread < spread) {
+        if (low >= 0) cones.pop_back();
+        negative.push_back(high);
+        phi = std::move(with_negative);
+        spread = negative_spread;
+      }
+    } else {
+      const int32_t low = extreme(metric.scale(target(cones)), false);
+      if (low < 0) break;
+      cones.push_back(low);
+      phi = metric.scale(target(cones));
+      spread = scale_spread(base, phi);
+    }
     if (spread < kRelocationGain * best_spread) {
       best_cones = cones;
       best_negative = negative;
@@ -255,7 +311,7 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
     const Tri& t = mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
       const int32_t g = base.face_across[f][k];
-      if (reached[g]) continue;
+      if (g < 0 || reached[g]) continue;
       reached[g] = 1;
       const int32_t a = t[k], b = t[(k + 1) % 3];
       const Tri& tg = mesh.triangles[g];

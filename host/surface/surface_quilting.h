@@ -43,7 +43,7 @@ struct SurfaceQuiltOptions : QuiltOptions {
   //! (seamless_layout.h): 0.1 conformal, 3-10 even sizes with stretched elements.
   double size_hold = kDefaultSizeHold;
   //! The bound on that layout's scale spread (p90 / p10 by area) that pairs of cones are added
-  //! for, where no field was drawn on a closed genus-0 base (cone_metric_field.h).
+  //! for, where no field was drawn on a closed genus-0 base or a disc (cone_metric_field.h).
   double cone_spread = kDefaultConeSpread;
   //! Where the pattern filled straight from the layout covers most of the base and its median
   //! element is off the size asked, lays the layout out again to bring it to that size.

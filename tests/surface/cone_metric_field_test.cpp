@@ -189,11 +189,46 @@ TEST(ConeMetricField, PairsOfConesNarrowTheScaleWhereFourLeaveItSpread) {
   EXPECT_LE(cones_of(m, base, *fewer).negative.size(), with.negative.size());
 }
 
-TEST(ConeMetricField, RefusesBasesThatAreNotOneClosedSphere) {
+// A disc keeps its border's lengths: a flat one needs no cone; the bumpy sphere cut open below
+// gets cones inside it, of either sign, that narrow its scale.
+TEST(ConeMetricField, ADiscsConesLieInsideItAndEvenItsScale) {
+  const TriMesh grid = test::flat_grid(8, 8, 0.1);
+  const BaseSurface flat(grid);
+  const auto none = cone_metric_field(flat, 2, Vec3(1.0, 0.0, 0.0), ConeBound{1.0, 0.1, 8});
+  ASSERT_TRUE(none);
+  for (int index : field_indices(flat, *none)) EXPECT_EQ(index, 0);
+  EXPECT_NEAR(*field_scale_spread(flat, *none), 1.0, 1e-6);
+
+  const TriMesh closed = bumpy_sphere();
+  TriMesh cap;
+  cap.positions = closed.positions;
+  for (const Tri& t : closed.triangles)
+    if (closed.positions[t[0]].z + closed.positions[t[1]].z + closed.positions[t[2]].z > -1.5) cap.triangles.push_back(t);
+  const BaseSurface base(cap);
+  const auto bare = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0), ConeBound{1.0, 0.5, 0});
+  const auto placed = cone_metric_field(base, 2, Vec3(1.0, 0.0, 0.0), ConeBound{1.0, 0.5, 16});
+  ASSERT_TRUE(bare && placed);
+  const ConeSet cones = cones_of(cap, base, *placed);
+  const double bare_spread = *field_scale_spread(base, *bare), placed_spread = *field_scale_spread(base, *placed);
+  std::printf("bumpy cap: no cones spread %.3f; %zu + %zu cones spread %.3f\n", bare_spread, cones.positive.size(),
+              cones.negative.size(), placed_spread);
+  for (int index : field_indices(base, *bare)) EXPECT_EQ(index, 0);
+  EXPECT_GT(cones.positive.size(), 0u);
+  EXPECT_LT(placed_spread, 0.8 * bare_spread);
+  // field_indices reads no index at a border vertex; every cone placed is one of the field's.
+  std::vector<Vec3> all = cones.positive;
+  all.insert(all.end(), cones.negative.begin(), cones.negative.end());
+  for (size_t i = 0; i < all.size(); ++i)
+    for (size_t j = i + 1; j < all.size(); ++j) EXPECT_GE(glm::length(all[i] - all[j]), 0.5 * (1.0 - 1e-9));
+}
+
+TEST(ConeMetricField, RefusesBasesThatAreNeitherOneSphereNorOneDisc) {
   const TriMesh ring = torus(24, 12);
   EXPECT_FALSE(cone_metric_field(BaseSurface(ring), 2, Vec3(1.0, 0.0, 0.0)));
-  const TriMesh grid = test::flat_grid(6, 6, 0.1);
-  EXPECT_FALSE(cone_metric_field(BaseSurface(grid), 2, Vec3(1.0, 0.0, 0.0)));
+  // An open tube: an annulus, two borders.
+  TriMesh tube = ring;
+  tube.triangles.resize(tube.triangles.size() - 2 * 12);
+  EXPECT_FALSE(cone_metric_field(BaseSurface(tube), 2, Vec3(1.0, 0.0, 0.0)));
   TriMesh two = test::icosphere(1);
   const TriMesh other = test::icosphere(1, 0.5);
   const auto offset = static_cast<int32_t>(two.positions.size());
