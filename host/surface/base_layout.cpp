@@ -73,13 +73,13 @@ BaseLayout::BaseLayout(const BaseSurface& base, int symmetry, const std::vector<
       bound.separation = kConeSeparation * std::max(glm::length((*lattice_)[0]), glm::length((*lattice_)[1]));
     std::optional<DirectionField> placed = cone_metric_field(*fine_, symmetry, fine_target[0], bound);
     if (placed) {
-      const double placed_spread = *field_scale_spread(*fine_, *placed);
-      const double smoothest_spread = *field_scale_spread(*fine_, field_);
-      const auto count = [&](const DirectionField& field) {
-        const std::vector<int> index = field_indices(*fine_, field);
+      const std::vector<int> placed_index = field_indices(*fine_, *placed), smoothest_index = field_indices(*fine_, field_);
+      const double placed_spread = *cone_scale_spread(*fine_, placed_index, symmetry);
+      const double smoothest_spread = *cone_scale_spread(*fine_, smoothest_index, symmetry);
+      const auto count = [](const std::vector<int>& index) {
         return std::count_if(index.begin(), index.end(), [](int k) { return k != 0; });
       };
-      const double tie = count(*placed) >= count(field_) ? kConeSpreadTie : 1.0;
+      const double tie = count(placed_index) >= count(smoothest_index) ? kConeSpreadTie : 1.0;
       if (placed_spread < tie * smoothest_spread) {
         field_ = std::move(*placed);
         scale_spread_ = placed_spread;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <initializer_list>
 #include <glm/geometric.hpp>
 #include <limits>
 
@@ -143,12 +144,15 @@ double scale_spread(const BaseSurface& base, const std::vector<double>& phi) {
   return std::exp(quantile(0.9) - quantile(0.1));
 }
 
-std::optional<double> field_scale_spread(const BaseSurface& base, const DirectionField& field) {
+std::optional<double> cone_scale_spread(const BaseSurface& base, const std::vector<int>& index, int symmetry) {
   if (metric_shape(base) == MetricShape::kNone) return std::nullopt;
-  const std::vector<int> index = field_indices(base, field);
   std::vector<double> curvature(index.size());
-  for (size_t v = 0; v < index.size(); ++v) curvature[v] = index[v] * 2.0 * kPi / field.symmetry;
+  for (size_t v = 0; v < index.size(); ++v) curvature[v] = index[v] * 2.0 * kPi / symmetry;
   return scale_spread(base, cone_metric_scale(base, curvature));
+}
+
+std::optional<double> field_scale_spread(const BaseSurface& base, const DirectionField& field) {
+  return cone_scale_spread(base, field_indices(base, field), field.symmetry);
 }
 
 std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int symmetry, const Vec3& root_direction,
@@ -177,21 +181,29 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
     for (int32_t c : negative) k[c] -= deficit;
     return k;
   };
-  // The vertex of lowest phi, at least `bound.separation` from every cone taken (or, where none
-  // is, the lowest not taken).
-  const auto lowest = [&](const std::vector<double>& phi, const std::vector<int32_t>& taken) {
+  // The vertex off the border where `of` is lowest (or highest), none of `taken`, at least
+  // `bound.separation` from each of them; where none is that far, the nearer ones when
+  // `or_nearer`, else -1.
+  const auto pick = [&](const std::vector<double>& of, bool highest, std::initializer_list<const std::vector<int32_t>*> taken,
+                        bool or_nearer) {
     int32_t best = -1, nearer = -1;
+    const auto better = [&](size_t v, int32_t than) { return than < 0 || (highest ? of[v] > of[than] : of[v] < of[than]); };
     for (size_t v = 0; v < vertices; ++v) {
-      if (base.vertex_faces[v].empty() || border[v] ||
-          std::find(taken.begin(), taken.end(), static_cast<int32_t>(v)) != taken.end())
-        continue;
-      const bool apart = std::all_of(taken.begin(), taken.end(), [&](int32_t c) {
-        return glm::length(mesh.positions[c] - mesh.positions[v]) >= bound.separation;
-      });
+      if (base.vertex_faces[v].empty() || border[v]) continue;
+      bool is_taken = false, apart = true;
+      for (const std::vector<int32_t>* set : taken)
+        for (int32_t c : *set) {
+          is_taken = is_taken || c == static_cast<int32_t>(v);
+          apart = apart && glm::length(mesh.positions[c] - mesh.positions[v]) >= bound.separation;
+        }
+      if (is_taken) continue;
       int32_t& slot = apart ? best : nearer;
-      if (slot < 0 || phi[v] < phi[slot]) slot = static_cast<int32_t>(v);
+      if (better(v, slot)) slot = static_cast<int32_t>(v);
     }
-    return best >= 0 ? best : nearer;
+    return best >= 0 || !or_nearer ? best : nearer;
+  };
+  const auto lowest = [&](const std::vector<double>& phi, const std::vector<int32_t>& taken) {
+    return pick(phi, false, {&taken}, true);
   };
   const ConeMetric metric(base, shape == MetricShape::kDisc ? border : std::vector<uint8_t>{});
   std::vector<int32_t> cones;
@@ -236,19 +248,8 @@ std::optional<DirectionField> cone_metric_field(const BaseSurface& base, int sym
   // a negative cone where lengths in the metric are longest (elements smallest), then a positive
   // one where they are shortest; on a disc one at a time, of the sign that evens the scale more.
   // Each apart from every cone so far.
-  const auto apart = [&](int32_t v) {
-    const Vec3& p = mesh.positions[v];
-    for (const std::vector<int32_t>* set : {&cones, &negative})
-      for (int32_t c : *set)
-        if (glm::length(mesh.positions[c] - p) < bound.separation) return false;
-    return !base.vertex_faces[v].empty() && !border[v];
-  };
   const auto extreme = [&](const std::vector<double>& of, bool highest) {
-    int32_t best = -1;
-    for (size_t v = 0; v < vertices; ++v)
-      if (apart(static_cast<int32_t>(v)) && (best < 0 || (highest ? of[v] > of[best] : of[v] < of[best])))
-        best = static_cast<int32_t>(v);
-    return best;
+    return pick(of, highest, {&cones, &negative}, false);
   };
   // The greedy cones do not narrow the spread step by step: the placement kept is the first
   // within the bound, or else the narrowest seen.

@@ -23,8 +23,11 @@ std::vector<double> cone_metric_scale(const BaseSurface& base, const std::vector
 //! exp(p90 - p10) of phi, weighted by vertex area: how far lengths in the metric spread.
 double scale_spread(const BaseSurface& base, const std::vector<double>& phi);
 
-//! The scale spread of the flat metric whose cones are the field's singularities.
+//! The scale spread of the flat metric with a cone of index[v] / symmetry at each vertex v.
 //! std::nullopt where the base is neither one closed component of genus 0 nor one disc.
+std::optional<double> cone_scale_spread(const BaseSurface& base, const std::vector<int>& index, int symmetry);
+
+//! cone_scale_spread at the field's singularities (field_indices).
 std::optional<double> field_scale_spread(const BaseSurface& base, const DirectionField& field);
 
 //! The default bound on the layout's scale spread: #65's element sizes, p90 / p10 = 1.25 / 0.8.

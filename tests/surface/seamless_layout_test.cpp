@@ -41,7 +41,9 @@ TEST(DirectionField, IndicesOfASphereSumToNTimesTwo) {
     for (int i : index) cones += i != 0;
     EXPECT_EQ(index_sum(index), 2 * n) << "n = " << n;
     // The smoothest vector and line fields spread their singularities into 2n cones of index 1 / n.
-    if (n <= 2) EXPECT_EQ(cones, 2 * n) << "n = " << n;
+    if (n <= 2) {
+      EXPECT_EQ(cones, 2 * n) << "n = " << n;
+    }
   }
 }
 
