@@ -77,7 +77,8 @@ void add_inspect_command(CLI::App& app) {
   region->needs(plane);
   auto* base = cmd->add_option("--base", args->base,
                                "base mesh: coverage of its area (within half the median element extent "
-                               "of a vertex's foot) and signed heights in units of its bbox diagonal");
+                               "of a vertex's foot, or with --swatch half the diagonal of the swatch's "
+                               "largest gap and an edge) and signed heights in units of its bbox diagonal");
   auto* shell = cmd->add_option("--shell-height", args->shell_height,
                                 "shell height H in base bbox diagonals; counts vertices below the base or above H")
                     ->check(CLI::PositiveNumber);

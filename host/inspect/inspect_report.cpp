@@ -202,7 +202,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     // The swatch's own gaps are not missing cover. They are scaled as its edges are: elements
     // stitched into longer ones change their extents, not their tessellation.
     const double swatch_edge = mean_edge_length(swatch), output_edge = mean_edge_length(mesh);
-    if (options.plane && swatch_edge > 0.0 && output_edge > 0.0)
+    if ((options.plane || base_input) && swatch_edge > 0.0 && output_edge > 0.0)
       swatch_gap_cell = largest_empty_square(swatch) * output_edge / swatch_edge;
     InspectReport::Swatch s;
     s.elements = count;
@@ -227,7 +227,12 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     const TriMesh base = welded_or_throw(*base_input, options.weld_tolerance, options.base_name);
     BaseCoverageOptions base_options = options.base_options;
     if (options.shell_height) base_options.shell_height = options.shell_height;
-    const double radius = 0.5 * positive_median(measures.extent, 0.01 * (diagonal > 0.0 ? diagonal : 1.0));
+    // With a swatch, as far as a base point inside its largest gap lies from the geometry round
+    // it (half the gap's diagonal) and on to a vertex (an edge); without, half the median
+    // element, which for yarns stitched into long runs passes over a bare ear.
+    const double radius = swatch_gap_cell > 0.0
+                              ? swatch_gap_cell * std::sqrt(0.5) + mean_edge_length(mesh)
+                              : 0.5 * positive_median(measures.extent, 0.01 * (diagonal > 0.0 ? diagonal : 1.0));
     report.base = base_coverage(mesh, base, radius, base_options);
     report.shell_height = base_options.shell_height;
     timer.lap("base coverage");

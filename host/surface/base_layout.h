@@ -21,11 +21,13 @@ class BaseLayout {
  public:
   //! target, weight: per base face, as smoothest_direction_field takes them; drawn: the user
   //! gave directions, which the field must follow; lattice, size_hold: as seamless_layout
-  //! takes them; cone_spread: the bound on the cone metric's scale spread (ConeBound::spread).
+  //! takes them; cone_spread: the bound on the cone metric's scale spread (ConeBound::spread);
+  //! stand_alone: the pattern's elements stand alone (rings); else they run on (yarns), end at
+  //! every cone, and each cone more than the smoothest field has must narrow the spread.
   //! \throw SolverError when a solve fails.
   BaseLayout(const BaseSurface& base, int symmetry, const std::vector<Vec3>& target, const std::vector<double>& weight,
              bool drawn = false, const std::optional<std::array<glm::dvec2, 2>>& lattice = std::nullopt,
-             double size_hold = kDefaultSizeHold, double cone_spread = kDefaultConeSpread);
+             double size_hold = kDefaultSizeHold, double cone_spread = kDefaultConeSpread, bool stand_alone = true);
   //! Lays the same field out again with elements element_scale times the size (seamless_layout).
   void resize(double element_scale);
   BaseLayout(const BaseLayout&) = delete;

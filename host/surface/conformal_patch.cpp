@@ -565,7 +565,7 @@ std::optional<SurfacePatch> grow_layout_window(const BaseSurface& base, const Su
 }
 
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
-                                  const std::vector<Vec3>* face_field, const BaseLayout* layout) {
+                                  const std::vector<Vec3>* face_field, const BaseLayout* layout, bool layout_window) {
   const TriMesh& mesh = base.mesh;
   SurfacePatch patch;
   patch.radius = radius;
@@ -576,7 +576,8 @@ SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& s
   // chart of the patch alone (the layout's field, combed over the window) where that does not
   // fold; the conformal map, scaled to the patch's area, otherwise and where no layout is given.
   if (layout) {
-    if (std::optional<SurfacePatch> window = window_of(base, seed, radius, faces, *layout)) return std::move(*window);
+    if (layout_window)
+      if (std::optional<SurfacePatch> window = window_of(base, seed, radius, faces, *layout)) return std::move(*window);
     const LayoutWindow window =
         layout->unfold(faces, seed.face, patch.local_vertex_of_face_, static_cast<int32_t>(patch.vertices.size()));
     std::vector<Vec3> face_field(mesh.num_faces(), Vec3(0.0));

@@ -86,10 +86,11 @@ std::vector<int32_t> ball_faces(const BaseSurface& base, const SurfacePoint& see
 //! that unfolds without a cone or a fold, else flattened along its field (field_aligned_flattening,
 //! in base units) where that does not fold; LSCM is the last resort. A layout window's
 //! area_distortion is 1: its scale is the shared layout's, which no smaller window changes.
+//! Without `layout_window` the layout's field is followed but no window is taken.
 //! \throw SolverError when the LSCM system cannot be solved.
 SurfacePatch grow_conformal_patch(const BaseSurface& base, const SurfacePoint& seed, double radius,
                                   const std::vector<Vec3>* face_field = nullptr,
-                                  const BaseLayout* layout = nullptr);
+                                  const BaseLayout* layout = nullptr, bool layout_window = true);
 
 //! The patch grow_conformal_patch makes from a window of `layout`, without its fallbacks: nullopt
 //! where the window folds.

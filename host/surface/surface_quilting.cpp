@@ -104,7 +104,8 @@ class SurfaceDriver {
         setup_(input_swatch, device, options, stats), swatch_(setup_.swatch), cell_(setup_.cell), base_(base_mesh),
         // Base units per swatch unit.
         unit_(options.scale * base_.diagonal / std::max(swatch_.extent.x, swatch_.extent.y)),
-        cells_(make_cells()), seeds_(cells_.neighbours), holes_(seeds_, options.seed_attempts), rng_(options.seed) {
+        cells_(make_cells()), seeds_(cells_.neighbours), holes_(seeds_, options.seed_attempts),
+        own_chart_(cells_.centres.size(), 0), rng_(options.seed) {
     stats_.base_faces = static_cast<int>(base_mesh.num_faces());
     stats_.diagonal = base_.diagonal;
     double thickness = 0.0;
@@ -144,12 +145,16 @@ class SurfaceDriver {
     // field's rotational freedom.
     const FieldTargets targets = field_targets(base_, field_);
     lattice_ = swatch_lattice(swatch_, n);
-    if (lattice_)
+    if (lattice_) {
       contacts_ = std::make_unique<LatticeContacts>(swatch_, lattice_->basis, setup_.step.partner_distance * swatch_.mean_edge);
+      classes_ = lattice_classes(swatch_, *lattice_, setup_.step.partner_distance * swatch_.mean_edge,
+                                 setup_.step.copy_tolerance * swatch_.mean_edge);
+      stand_alone_ = std::any_of(classes_.begin(), classes_.end(), [](const LatticeClass& c) { return c.alone; });
+    }
     std::optional<std::array<glm::dvec2, 2>> periods;
     if (lattice_) periods = std::array<glm::dvec2, 2>{unit_ * lattice_->basis[0], unit_ * lattice_->basis[1]};
     auto layout = std::make_unique<BaseLayout>(base_, n, targets.target, targets.weight, !field_.held_vertices.empty(),
-                                               periods, options_.size_hold, options_.cone_spread);
+                                               periods, options_.size_hold, options_.cone_spread, stand_alone_);
     stats_.on_lattice = layout->layout().on_lattice;
     stats_.field_symmetry = n;
     stats_.cones = layout->cones();
@@ -165,9 +170,7 @@ class SurfaceDriver {
   std::unique_ptr<LatticeFill> make_fill() {
     if (!lattice_ || !layout_->layout().on_lattice || !(options_.fill_margin > 0.0)) return nullptr;
     StageTimer timer(seconds_, "fill");
-    std::vector<LatticeClass> classes =
-        lattice_classes(swatch_, *lattice_, setup_.step.partner_distance * swatch_.mean_edge,
-                        setup_.step.copy_tolerance * swatch_.mean_edge);
+    std::vector<LatticeClass> classes = classes_;
     // A cone's neighbourhood is left to the patch step: a period and the widest element around it.
     double widest = std::max(glm::length(lattice_->basis[0]), glm::length(lattice_->basis[1]));
     for (const LatticeClass& c : classes) {
@@ -382,18 +385,23 @@ class SurfaceDriver {
         seeds_.mark_processed(c);
         processed_area_ += cells_.areas[c];
       }
-    // A window that starts beside a seed the layout folds leaves the seed's face out: the patch
-    // around it is all that can be placed there.
-    if (patch.face_index(seed.face) < 0 && !seeds_.processed(seed_cell)) {
+    if (patch.chart != PatchChart::layout_window || seeds_.processed(seed_cell)) return;
+    // Seeded again, a layout window is the same window (its distortion is never what failed).
+    // Where the pattern's elements stand alone the lattice closes round a cone, and rings placed
+    // off it there would link to none: a window that leaves the seed's face out (folded round a
+    // cone) is all that can be placed there, and a cell it left uncovered is a hole. Yarns have
+    // nothing else to cover it (most of the bunny's ears, where cones crowd): the cell is
+    // seeded again with a chart of the patch alone, off the lattice.
+    if (!stand_alone_) {
+      own_chart_[seed_cell] = 1;
+      return;
+    }
+    if (patch.face_index(seed.face) < 0) {
       seeds_.mark_processed(seed_cell);
-      processed_area_ += cells_.areas[seed_cell];
-    }
-    // Seeded again, a layout window is the same window (its distortion is never what failed), so
-    // a cell it left uncovered is a hole at once.
-    if (patch.chart == PatchChart::layout_window && !seeds_.processed(seed_cell)) {
+    } else {
       holes_.give_up(seed_cell);
-      processed_area_ += cells_.areas[seed_cell];
     }
+    processed_area_ += cells_.areas[seed_cell];
   }
 
   // On a layout whose seams continue by the swatch's periods, the pattern fits only where a
@@ -421,7 +429,8 @@ class SurfaceDriver {
     const double max_distortion = options_.max_area_distortion * std::ldexp(1.0, holes_.tries(seed_cell));
     SurfacePatch patch;
     for (int attempt = 0;; ++attempt) {
-      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get());
+      patch = grow_conformal_patch(base_, seed, full_radius_ * shrink, layout_ ? nullptr : &face_field_, layout_.get(),
+                                   !own_chart_[seed_cell]);
       const bool good = patch.flipped_faces == 0 && patch.area_distortion <= max_distortion;
       if (good || attempt >= options_.max_shrinks) break;
       shrink *= 0.75;
@@ -809,6 +818,7 @@ class SurfaceDriver {
   SurfaceCells cells_;
   SeedFinder seeds_;
   HoleTracker holes_;
+  std::vector<uint8_t> own_chart_;  //!< per cell: a layout window left it uncovered
   std::mt19937_64 rng_;
   double shell_ = 0.0, height_unit_ = 0.0, full_radius_ = 0.0;
   int sub_nx_ = 1, sub_ny_ = 1;
@@ -819,6 +829,8 @@ class SurfaceDriver {
   std::unique_ptr<LatticeFill> fill_;  // where the layout carries a pattern with elements that stand alone
   std::optional<ElementFacePairs> final_map_met_;  // faces that met with every element through the final map
   std::optional<SwatchLattice> lattice_;  // the swatch's periods, where its pattern repeats
+  std::vector<LatticeClass> classes_;     // its elements' classes in the lattice
+  bool stand_alone_ = false;              // some of them stand alone (rings, not yarns)
   std::vector<Vec3> face_field_;  // per base face, for field-aligned charts of single patches
   std::vector<SurfaceElement> elements_;
   std::vector<uint8_t> alive_;

@@ -128,6 +128,10 @@ TEST(SizeHold, EvensTheRingsOverTheBunny) {
   std::filesystem::remove_all(dir);
 }
 
+// bunny.off's ears: its faces above this height (y up), and how much of them a weave covers.
+constexpr double kEarsAbove = 0.14;
+constexpr double kEarCoverage = 0.95;
+
 // #65's weave: the default plain weave over the bunny at the same scale still runs on across
 // patches, and no yarn leaves the shell (the base to the shell height above it) by more than its
 // own radius.
@@ -152,6 +156,23 @@ TEST(WeaveOverABase, YarnsContinueAndStayInTheShell) {
   EXPECT_LE(highest, shell + radius);
   EXPECT_GE(lowest, -radius);
   EXPECT_GE(report.at("coverage").get<double>(), 0.95);
+
+  // The ears, where cones crowd: cells a layout window folded round a cone left bare are seeded
+  // again with a chart of their own, so the ears are covered as the body is.
+  const TriMesh bunny = read_mesh(base);
+  TriMesh ears;
+  ears.positions = bunny.positions;
+  for (const Tri& t : bunny.triangles)
+    if (std::all_of(t.begin(), t.end(), [&](int32_t v) { return bunny.positions[v].y > kEarsAbove; }))
+      ears.triangles.push_back(t);
+  write_mesh(ears, dir / "ears.off");
+  const auto on_ears = test::run_cli("inspect '" + (dir / "out.ply").string() + "' --swatch '" +
+                                     (dir / "swatch.ply").string() + "' --base '" + (dir / "ears.off").string() +
+                                     "' --json 2>/dev/null");
+  ASSERT_EQ(on_ears.exit_code, 0) << on_ears.output;
+  const double ear_coverage = nlohmann::json::parse(on_ears.output).at("coverage").get<double>();
+  std::printf("coverage %.3f, of the ears %.3f\n", report.at("coverage").get<double>(), ear_coverage);
+  EXPECT_GE(ear_coverage, kEarCoverage);
   std::filesystem::remove_all(dir);
 }
 
