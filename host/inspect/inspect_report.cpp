@@ -164,7 +164,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     timer.lap("yarns");
   }
 
-  double swatch_gap_cell = 0.0;
+  double swatch_gap_cell = 0.0, output_edge = 0.0;
   if (swatch_input) {
     const TriMesh swatch = welded_or_throw(*swatch_input, options.weld_tolerance, options.swatch_name);
     int32_t count = 0;
@@ -201,7 +201,8 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     const ElementMeasures sm = element_measures(swatch, swatch_elements, count);
     // The swatch's own gaps are not missing cover. They are scaled as its edges are: elements
     // stitched into longer ones change their extents, not their tessellation.
-    const double swatch_edge = mean_edge_length(swatch), output_edge = mean_edge_length(mesh);
+    const double swatch_edge = mean_edge_length(swatch);
+    output_edge = mean_edge_length(mesh);
     if ((options.plane || base_input) && swatch_edge > 0.0 && output_edge > 0.0)
       swatch_gap_cell = largest_empty_square(swatch) * output_edge / swatch_edge;
     InspectReport::Swatch s;
@@ -231,7 +232,7 @@ InspectReport inspect_mesh(const TriMesh& input, const InspectOptions& options, 
     // it (half the gap's diagonal) and on to a vertex (an edge); without, half the median
     // element, which for yarns stitched into long runs passes over a bare ear.
     const double radius = swatch_gap_cell > 0.0
-                              ? swatch_gap_cell * std::sqrt(0.5) + mean_edge_length(mesh)
+                              ? swatch_gap_cell * std::sqrt(0.5) + output_edge
                               : 0.5 * positive_median(measures.extent, 0.01 * (diagonal > 0.0 ? diagonal : 1.0));
     report.base = base_coverage(mesh, base, radius, base_options);
     report.shell_height = base_options.shell_height;
